@@ -1,0 +1,157 @@
+// `facet render`: load a scene, render it with the fast path, write a PNG.
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "facet/image_io.hpp"
+#include "facet/render.hpp"
+#include "facet/scene_io.hpp"
+
+namespace facet::app {
+namespace {
+
+struct RenderOptions {
+    std::string scene;
+    std::string output;
+    std::string mode = "solid";
+    std::string shader = "painter";
+    std::string interp = "perspective";
+    std::string size;
+    std::string background = "5C5C5C";
+    bool cull = false;
+    bool stats = false;
+    double nearPlane = 0.0;
+    int pointSize = 5;
+    int frames = 1;
+};
+
+/// Parses "WxH" into positive integers within the scene limits.
+bool parseSize(const std::string& text, int& w, int& h) {
+    const auto x = text.find_first_of("xX");
+    if (x == std::string::npos) return false;
+    const char* b = text.data();
+    const char* e = b + text.size();
+    auto r1 = std::from_chars(b, b + x, w);
+    auto r2 = std::from_chars(b + x + 1, e, h);
+    return r1.ec == std::errc{} && r1.ptr == b + x && r2.ec == std::errc{} && r2.ptr == e &&
+           w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
+}
+
+/// Parses RRGGBB (an optional leading # or 0x is accepted).
+bool parseHexColor(std::string text, std::uint32_t& rgb) {
+    if (text.rfind("#", 0) == 0) text.erase(0, 1);
+    if (text.rfind("0x", 0) == 0 || text.rfind("0X", 0) == 0) text.erase(0, 2);
+    if (text.size() != 6) return false;
+    auto r = std::from_chars(text.data(), text.data() + 6, rgb, 16);
+    return r.ec == std::errc{} && r.ptr == text.data() + 6;
+}
+
+int bad(const std::string& message) {
+    std::fprintf(stderr, "facet render: %s\n", message.c_str());
+    return kBadInput;
+}
+
+int runRender(const RenderOptions& o) {
+    RenderSettings settings;
+    // CLI11 has already checked the names against the sets below.
+    settings.mode = *parseDrawMode(o.mode);
+    settings.shader = *parseShader(o.shader);
+    settings.interp = *parseInterp(o.interp);
+    settings.cullBackFaces = o.cull;
+    settings.nearPlane = o.nearPlane;
+    settings.pointSize = o.pointSize;
+    if (!parseHexColor(o.background, settings.background))
+        return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
+
+    Result<Scene> loaded = loadScene(o.scene);
+    if (!loaded) return bad(loaded.error().what());
+    Scene& scene = loaded.value();
+    if (!o.size.empty()) {
+        int w = 0, h = 0;
+        if (!parseSize(o.size, w, h))
+            return bad("--size wants WxH with 1..16384 each, got '" + o.size + "'");
+        // Scaling f with the width keeps the horizontal field of view.
+        scene.camera.focal *= static_cast<double>(w) / scene.camera.width;
+        scene.camera.width = w;
+        scene.camera.height = h;
+    }
+
+    Renderer renderer;
+    Framebuffer frame;
+    RenderStats stats;
+    std::vector<double> ms;
+    for (int i = 0; i < std::max(1, o.frames); ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        stats = renderer.render(scene, settings, frame);
+        const auto t1 = std::chrono::steady_clock::now();
+        ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    }
+    if (Status st = writePng(frame, o.output)) {
+        std::fprintf(stderr, "facet render: %s\n", st->what().c_str());
+        return kFailed;
+    }
+    std::printf("wrote %s (%dx%d, %s, %s, %s%s)\n", o.output.c_str(), frame.width, frame.height,
+                o.mode.c_str(), o.shader.c_str(), o.interp.c_str(), o.cull ? ", culled" : "");
+    if (o.frames > 1) {
+        std::vector<double> sorted = ms;
+        std::sort(sorted.begin(), sorted.end());
+        const std::size_t n = sorted.size();
+        const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+        std::printf("median %.3f ms (min %.3f, max %.3f) over %zu frames\n", median, sorted.front(),
+                    sorted.back(), n);
+    }
+    if (o.stats) {
+        std::printf("mesh: %zu vertices, %zu triangles%s%s\n", scene.mesh.vertexCount(),
+                    scene.mesh.triangleCount(), scene.mesh.hasColors() ? ", colours" : "",
+                    scene.mesh.hasUvs() ? ", uv" : "");
+        std::printf("triangles: %zu in, %zu culled, %zu clipped, %zu rasterized\n",
+                    stats.trianglesIn, stats.trianglesCulled, stats.trianglesClipped,
+                    stats.trianglesRasterized);
+        std::printf("lines: %zu, points: %zu, fragments: %zu\n", stats.linesDrawn,
+                    stats.pointsDrawn, stats.fragments);
+        if (settings.shader == ShaderKind::Depth)
+            std::printf("depth range: %.6g .. %.6g\n", stats.depthNear, stats.depthFar);
+        std::printf("time: %.3f ms (last frame)\n", ms.back());
+    }
+    return kOk;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, int& exitCode) {
+    auto opts = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand("render", "Render a .scene file to a PNG image");
+    cmd->add_option("scene", opts->scene, "The .scene file")->required();
+    cmd->add_option("-o,--output", opts->output, "Output PNG path")->required();
+    cmd->add_option("--mode", opts->mode, "Draw mode")
+        ->check(CLI::IsMember({"vertices", "wireframe", "solid"}))
+        ->capture_default_str();
+    cmd->add_option("--shader", opts->shader, "Shader")
+        ->check(CLI::IsMember({"simple", "painter", "depth"}))
+        ->capture_default_str();
+    cmd->add_option("--interp", opts->interp, "Attribute interpolation")
+        ->check(CLI::IsMember({"affine", "perspective"}))
+        ->capture_default_str();
+    cmd->add_flag("--cull", opts->cull, "Drop back-facing triangles");
+    cmd->add_option("--size", opts->size, "Image size WxH (focal length scales with the width)");
+    cmd->add_option("--background", opts->background, "Background colour, hex RRGGBB")
+        ->capture_default_str();
+    cmd->add_option("--near", opts->nearPlane,
+                    "Near plane distance (default: 1/1000 of the mesh size)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--point-size", opts->pointSize, "Side of the vertex squares in pixels")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
+    cmd->add_option("--frames", opts->frames, "Render N frames and print the median time")
+        ->check(CLI::Range(1, 100000));
+    cmd->add_flag("--stats", opts->stats, "Print mesh and draw statistics");
+    cmd->callback([opts, &exitCode] { exitCode = runRender(*opts); });
+}
+
+}  // namespace facet::app

@@ -1,0 +1,31 @@
+#pragma once
+// Camera transforms (conventions §4) as GLM matrices, named by what they map.
+//
+// Clip space here is the homogeneous pixel space of the course's K matrix: a camera-space point
+// (X, Y, Z) maps to clip (f·X + w/2·Z, f·Y + h/2·Z, Z, Z), so pixel = clip.xy / clip.w and
+// clip.w is the depth Z. The third row keeps Z so nothing is lost; there is no far plane.
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "facet/scene.hpp"
+
+namespace facet {
+
+/// Rigid transform world -> camera: rows x, y, z of the camera frame, origin at the eye.
+glm::dmat4 cameraFromWorld(const Camera& camera);
+
+/// Intrinsics: camera space -> homogeneous pixel (clip) space, depth kept in z and w.
+glm::dmat4 clipFromCamera(const Camera& camera);
+
+/// The product of the two above.
+glm::dmat4 clipFromWorld(const Camera& camera);
+
+/// Continuous pixel coordinates and depth of a world point (depth <= 0: behind the camera).
+glm::dvec3 projectToPixel(const Camera& camera, const glm::dvec3& world);
+
+/// Validates a camera as conventions §1 requires; returns an explanation or empty on success.
+std::string checkCamera(const Camera& camera);
+
+}  // namespace facet

@@ -1,0 +1,42 @@
+#pragma once
+// The frame: RGBA8 colour and float depth, plain buffers the viewer uploads as they are.
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace facet {
+
+/// Packs 8-bit channels into the in-memory RGBA byte order (R first).
+constexpr std::uint32_t packRgba(std::uint32_t r, std::uint32_t g, std::uint32_t b,
+                                 std::uint32_t a = 255) {
+    return r | (g << 8) | (b << 16) | (a << 24);
+}
+
+/// Converts 0xRRGGBB (as written by users) to an opaque packed RGBA pixel.
+constexpr std::uint32_t rgbaFromHex(std::uint32_t rgb) {
+    return packRgba((rgb >> 16) & 0xFF, (rgb >> 8) & 0xFF, rgb & 0xFF);
+}
+
+/// Colour and depth planes of equal size; depth holds camera-space Z, +inf where nothing drew.
+struct Framebuffer {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint32_t> color;  ///< row-major, row 0 at the top, bytes R,G,B,A
+    std::vector<float> depth;          ///< row-major camera-space depth
+
+    /// Reallocates only when the size changes (no allocation per frame at a fixed size).
+    void resize(int w, int h);
+    /// Fills colour with the background and depth with +inf.
+    void clear(std::uint32_t rgbaBackground);
+    /// Index of pixel (x, y).
+    std::size_t index(int x, int y) const {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+               static_cast<std::size_t>(x);
+    }
+};
+
+/// Depth value meaning "no fragment".
+inline constexpr float kEmptyDepth = std::numeric_limits<float>::infinity();
+
+}  // namespace facet

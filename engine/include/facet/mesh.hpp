@@ -1,0 +1,48 @@
+#pragma once
+// A triangle mesh as structure-of-arrays with one index buffer. Optional attributes are empty
+// vectors when the file has none, so a draw stores and interpolates only what exists.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace facet {
+
+/// Indexed triangle mesh; every non-empty attribute array has one entry per vertex.
+struct Mesh {
+    std::vector<glm::vec3> positions;  ///< object/world space (the course has no model matrix)
+    std::vector<glm::vec3> colors;     ///< RGB in [0,1]; empty means every vertex is white
+    std::vector<glm::vec2> uvs;  ///< texture coordinates, v = 0 at the image top; may be empty
+    std::vector<std::uint32_t>
+        indices;              ///< three per triangle, counter-clockwise seen from outside
+    std::string texturePath;  ///< resolved path of an OBJ map_Kd texture, empty if none
+
+    /// Number of vertices.
+    std::size_t vertexCount() const { return positions.size(); }
+    /// Number of triangles.
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    /// True when per-vertex colours are present.
+    bool hasColors() const { return !colors.empty(); }
+    /// True when texture coordinates are present.
+    bool hasUvs() const { return !uvs.empty(); }
+};
+
+/// Axis-aligned bounds of a mesh's positions (min > max when the mesh is empty).
+struct Bounds {
+    glm::vec3 min{1.0f};
+    glm::vec3 max{-1.0f};
+    /// Length of the box diagonal, 0 for an empty mesh.
+    float diagonal() const;
+};
+
+/// Bounds of all positions.
+Bounds computeBounds(const Mesh& mesh);
+
+/// Unique undirected edges of the triangles, each once as (lower index, higher index), sorted.
+std::vector<std::uint32_t> uniqueEdges(const Mesh& mesh);
+
+}  // namespace facet

@@ -1,0 +1,28 @@
+#pragma once
+// Mesh files: .off (course flavour, standard OFF/COFF) and .obj (through tinyobjloader).
+
+#include <string>
+#include <string_view>
+
+#include "facet/error.hpp"
+#include "facet/mesh.hpp"
+
+namespace facet {
+
+/// Parses OFF text; `fileName` only labels errors. Polygons are fanned into triangles.
+Result<Mesh> parseOff(std::string_view text, const std::string& fileName);
+
+/// Reads and parses an .off file.
+Result<Mesh> loadOff(const std::string& path);
+
+/// Reads an .obj file (and its .mtl); v/vt/vn triples become single-index vertices, v flipped to
+/// the top-down convention, map_Kd resolved into Mesh::texturePath.
+Result<Mesh> loadObj(const std::string& path);
+
+/// Loads by extension (.off or .obj, case-insensitive).
+Result<Mesh> loadMesh(const std::string& path);
+
+/// Writes a mesh as OFF with colours (and uv when present) in the course's vertex layout.
+Status writeOff(const Mesh& mesh, const std::string& path);
+
+}  // namespace facet

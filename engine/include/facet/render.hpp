@@ -1,0 +1,64 @@
+#pragma once
+// The fast path: scene -> clip space -> near/guard-band clipping -> fixed-point rasterization ->
+// shading into a Framebuffer. Variants are template specialisations picked once per draw.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "facet/framebuffer.hpp"
+#include "facet/scene.hpp"
+#include "facet/settings.hpp"
+
+namespace facet {
+
+/// Geometry already in clip space (see camera.hpp), as one draw consumes it.
+struct DrawInput {
+    std::span<const glm::vec4> clip;         ///< one per vertex
+    std::span<const glm::vec3> colors;       ///< one per vertex, or empty for white
+    std::span<const std::uint32_t> indices;  ///< three per triangle
+    float nearPlane = 1e-3f;                 ///< clip.w below this is cut away
+};
+
+/// What a draw did, for --stats, the viewer and tests.
+struct RenderStats {
+    std::size_t trianglesIn = 0;          ///< triangles submitted
+    std::size_t trianglesCulled = 0;      ///< back faces dropped (culling on)
+    std::size_t trianglesClipped = 0;     ///< triangles that crossed the near plane or guard band
+    std::size_t trianglesRasterized = 0;  ///< triangles that reached the rasterizer
+    std::size_t linesDrawn = 0;           ///< segments drawn in wireframe mode
+    std::size_t pointsDrawn = 0;          ///< vertex squares drawn
+    std::size_t fragments = 0;            ///< pixels that passed coverage (before the depth test)
+    float depthNear = 0.0f;               ///< smallest depth left in the frame (depth shader)
+    float depthFar = 0.0f;                ///< largest depth left in the frame (depth shader)
+};
+
+/// Near distance for a draw: the setting when positive, else 1e-3 of the mesh's bounding box
+/// diagonal (conventions §4, "a small fraction of the scene's size").
+double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh);
+
+/// Renders frames; keeps scratch buffers so a steady frame size allocates nothing per frame.
+class Renderer {
+  public:
+    /// Clears `frame` (resized to the camera's image) and renders the scene into it.
+    RenderStats render(const Scene& scene, const RenderSettings& settings, Framebuffer& frame);
+
+    /// Draws clip-space geometry into `frame` without clearing it. With the Depth shader the
+    /// depth-to-colour pass runs over the whole frame afterwards.
+    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
+
+    /// Counts, per pixel, how many triangles cover its centre (fill-rule tests, overdraw views).
+    /// `counts` is resized to width*height and zeroed first. Honours culling and clipping.
+    void countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
+                       int height, std::vector<std::uint16_t>& counts);
+
+  private:
+    std::vector<glm::vec4> clip_;
+    std::vector<std::uint32_t> edges_;
+};
+
+}  // namespace facet

@@ -1,0 +1,50 @@
+#pragma once
+// The contents of a .scene file (conventions §1) plus the mesh it names. Plain data: the viewer
+// edits these fields directly between frames.
+
+#include <string>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "facet/mesh.hpp"
+
+namespace facet {
+
+/// Pinhole camera: pose by look-at, intrinsics by focal length in pixels and image size.
+struct Camera {
+    glm::dvec3 eye{0.0, 0.0, -5.0};  ///< camera centre in world space
+    glm::dvec3 look{0.0, 0.0, 0.0};  ///< point the optical axis passes through
+    glm::dvec3 up{0.0, -1.0, 0.0};   ///< y hint: camera +y (image down) leans towards it
+    double focal = 512.0;            ///< focal length in pixels
+    int width = 512;                 ///< image width in pixels
+    int height = 512;                ///< image height in pixels
+};
+
+/// The scene's one light: a point at position.xyz / w, or a direction (w = 0) it comes from.
+struct Light {
+    glm::dvec4 position{0.0, 0.0, 8.0, 1.0};  ///< homogeneous position
+    double intensity = 1.0;                   ///< Id
+};
+
+/// Phong material coefficients (conventions §6).
+struct Material {
+    double ka = 0.5;  ///< ambient
+    double kd = 0.5;  ///< diffuse
+    double ks = 0.5;  ///< specular
+    double s = 1.0;   ///< shininess exponent
+};
+
+/// Everything one .scene file describes, with its mesh loaded.
+struct Scene {
+    std::string path;         ///< the .scene file itself
+    std::string meshPath;     ///< resolved mesh path
+    std::string texturePath;  ///< resolved texture path from line 10, empty if none
+    Mesh mesh;
+    Camera camera;
+    double ambient = 1.0;  ///< Ia
+    Light light;
+    Material material;
+};
+
+}  // namespace facet

@@ -1,0 +1,41 @@
+#pragma once
+// How to draw: one plain struct shared by the CLI, the viewer and both renderers.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace facet {
+
+/// The course's three draw modes.
+enum class DrawMode { Vertices, Wireframe, Solid };
+
+/// The course's shaders: Simple (no depth test, last wins), Painter (LESS depth test),
+/// Depth (depth-tested, then depth mapped through viridis: near dark, far bright).
+enum class ShaderKind { Simple, Painter, Depth };
+
+/// Attribute interpolation across a primitive. Depth is always perspective-correct.
+enum class Interp { Affine, Perspective };
+
+/// Everything that selects a pipeline variant or changes a draw.
+struct RenderSettings {
+    DrawMode mode = DrawMode::Solid;
+    ShaderKind shader = ShaderKind::Painter;
+    Interp interp = Interp::Perspective;
+    bool cullBackFaces = false;           ///< drop triangles seen from behind
+    std::uint32_t background = 0x5C5C5C;  ///< 0xRRGGBB, the course's grey
+    int pointSize = 5;                    ///< side of the vertex squares, in pixels
+    double nearPlane = 0.0;               ///< camera-space near distance; <= 0 means auto
+};
+
+/// Parses names as the CLI spells them ("solid", "painter", "affine"...); nullopt if unknown.
+std::optional<DrawMode> parseDrawMode(std::string_view name);
+std::optional<ShaderKind> parseShader(std::string_view name);
+std::optional<Interp> parseInterp(std::string_view name);
+
+/// Lower-case names for messages and UI.
+std::string_view toString(DrawMode mode);
+std::string_view toString(ShaderKind shader);
+std::string_view toString(Interp interp);
+
+}  // namespace facet

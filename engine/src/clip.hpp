@@ -1,0 +1,88 @@
+#pragma once
+// Clipping for the fast path: the near plane in homogeneous space (attributes follow the clip
+// parameter, which is exact for perspective-correct interpolation), and the guard band in 2D
+// screen space for coverage only. Both compute a crossing point from the inside endpoint, so two
+// triangles sharing an edge get bit-identical new vertices: no cracks along clipped edges.
+
+#include <array>
+#include <cstddef>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace facet::detail {
+
+/// A vertex as the clipper sees it: clip-space position and the interpolated colour.
+struct ClipVertex {
+    glm::vec4 pos;
+    glm::vec3 color;
+};
+
+/// A convex polygon with a fixed upper bound on its vertex count (no allocation).
+template <class V, std::size_t N>
+struct SmallPolygon {
+    std::array<V, N> v;
+    std::size_t size = 0;
+    void push(const V& x) { v[size++] = x; }
+};
+
+/// Clipping a triangle by one plane adds at most one vertex.
+using NearPolygon = SmallPolygon<ClipVertex, 4>;
+/// A triangle clipped by four guard-band lines has at most seven vertices.
+using ScreenPolygon = SmallPolygon<glm::dvec2, 8>;
+
+/// Sutherland–Hodgman of a triangle against w >= near; keeps the input winding.
+inline NearPolygon clipNear(const ClipVertex (&tri)[3], float near) {
+    NearPolygon out;
+    for (int i = 0; i < 3; ++i) {
+        const ClipVertex& a = tri[i];
+        const ClipVertex& b = tri[(i + 1) % 3];
+        const float da = a.pos.w - near;
+        const float db = b.pos.w - near;
+        if (da >= 0.0f) out.push(a);
+        if ((da >= 0.0f) != (db >= 0.0f)) {
+            const ClipVertex& in = da >= 0.0f ? a : b;
+            const ClipVertex& outside = da >= 0.0f ? b : a;
+            const float din = da >= 0.0f ? da : db;
+            const float dout = da >= 0.0f ? db : da;
+            const float t = din / (din - dout);
+            out.push(
+                {in.pos + t * (outside.pos - in.pos), in.color + t * (outside.color - in.color)});
+        }
+    }
+    return out;
+}
+
+/// Clips a screen-space triangle to the rectangle [lo, hi] (the guard band), keeping winding.
+inline ScreenPolygon clipToRect(const glm::dvec2 (&tri)[3], glm::dvec2 lo, glm::dvec2 hi) {
+    ScreenPolygon poly;
+    for (const auto& p : tri) poly.push(p);
+    // Each of the four lines as (axis, bound, keep-side sign).
+    const int axes[4] = {0, 0, 1, 1};
+    const double bounds[4] = {lo.x, hi.x, lo.y, hi.y};
+    const double signs[4] = {1.0, -1.0, 1.0, -1.0};
+    for (int k = 0; k < 4 && poly.size > 0; ++k) {
+        ScreenPolygon next;
+        for (std::size_t i = 0; i < poly.size; ++i) {
+            const glm::dvec2& a = poly.v[i];
+            const glm::dvec2& b = poly.v[(i + 1) % poly.size];
+            const double da = signs[k] * (a[axes[k]] - bounds[k]);
+            const double db = signs[k] * (b[axes[k]] - bounds[k]);
+            if (da >= 0.0) next.push(a);
+            if ((da >= 0.0) != (db >= 0.0)) {
+                const glm::dvec2& in = da >= 0.0 ? a : b;
+                const glm::dvec2& outside = da >= 0.0 ? b : a;
+                const double din = da >= 0.0 ? da : db;
+                const double dout = da >= 0.0 ? db : da;
+                glm::dvec2 p = in + (din / (din - dout)) * (outside - in);
+                p[axes[k]] = bounds[k];  // exactly on the line, whatever the rounding
+                next.push(p);
+            }
+        }
+        poly = next;
+    }
+    return poly;
+}
+
+}  // namespace facet::detail

@@ -1,0 +1,473 @@
+// The reference path: the executable specification of a correct image (conventions §4, §5, §8).
+//
+// Everything is double precision and written the obvious way: per triangle, every pixel of its
+// bounding box is tested; per line, every pixel is computed from a closed formula. It is slow on
+// purpose and must stay readable: the fast path (pipeline.cpp) implements exactly the rules
+// below with fixed point, tiles and templates, and is tested against this file.
+//
+// THE RULES (numbered as in the tests and the fast path)
+//  1. Projection (conventions §4): camera frame z = normalize(look - eye), x = normalize(up × z),
+//     y = z × x; p_c = R (p - eye) with R's rows x, y, z. Clip space is homogeneous pixel space:
+//     (f·X + w/2·Z, f·Y + h/2·Z, Z, Z), so pixel = clip.xy / clip.w and clip.w is the depth Z.
+//  2. The image starts as the background (0xRRGGBB, byte/255 per channel), depth +inf.
+//  3. Vertex colours are the mesh colours, or white when there are none.
+//  4. Solid: triangles in index order, clipped against w >= near (Sutherland–Hodgman, new
+//     vertices computed from the inside vertex), fanned (v0, vk, vk+1), then rasterized with the
+//     top-left rule at pixel centres; depth is always perspective-correct, colour affine or
+//     perspective-correct.
+//  5. Shaders: Simple writes colour only (last wins); Painter tests LESS and writes colour and
+//     depth; Depth is Painter, then maps every drawn pixel's depth to viridis over [dmin, dmax].
+//  6. Wireframe: sorted unique edges, clipped against w >= near, Bresenham as a closed formula,
+//     endpoints included, attributes interpolated by the major-axis step.
+//  7. Vertices: squares of pointSize pixels around floor(pixel position) of each vertex in front
+//     of the near plane.
+//  8. Ambiguity: pixels where a correct fast path (1/256 px snapping, float arithmetic) may
+//     legitimately differ are flagged in Image::ambiguous: (a) pixel centres within 1/256 px of
+//     a drawn triangle's edge and not clearly outside it; (b) depth tests between depths within
+//     a relative 1e-5; (c) for a line endpoint or point within 1/256 px of a pixel border, every
+//     pixel the line or square would cover with either rounding of that coordinate.
+//  9. toRgba: clamp, round to nearest, pack like facet::packRgba.
+
+#include "facet/reference.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "facet/colormap.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/render.hpp"
+
+namespace facet::reference {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// The fast path snaps screen positions to a 1/256 px grid; any decision closer than that to a
+// boundary may go either way there (rule 8).
+constexpr double kSnap = 1.0 / 256.0;
+// The fast path keeps float depths; LESS between nearly equal depths is a coin toss there.
+constexpr double kDepthMargin = 1e-5;
+// Line endpoints farther out than this are beyond any image and would overflow the int64
+// Bresenham arithmetic (2·k·dminor); such segments are not drawn. No sane scene gets near it.
+constexpr double kMaxLineCoord = 536870912.0;  // 2^29
+
+struct Vertex {
+    glm::dvec4 clip;
+    glm::dvec3 color;
+};
+
+// A triangle clipped by one plane has at most four vertices.
+struct Polygon {
+    std::array<Vertex, 4> v;
+    std::size_t count = 0;
+};
+
+std::size_t pixelIndex(const Image& img, std::int64_t x, std::int64_t y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) +
+           static_cast<std::size_t>(x);
+}
+
+bool inImage(const Image& img, std::int64_t x, std::int64_t y) {
+    return x >= 0 && y >= 0 && x < img.width && y < img.height;
+}
+
+// One fragment through the shader (rule 5). Depth for the Depth shader is mapped at the end.
+void shade(Image& img, ShaderKind shader, std::int64_t x, std::int64_t y, double depth,
+           const glm::dvec3& color) {
+    const std::size_t i = pixelIndex(img, x, y);
+    if (shader == ShaderKind::Simple) {
+        img.color[i] = color;
+        return;
+    }
+    const double old = img.depth[i];
+    // Rule 8(b): a float depth test may order two nearly equal depths the other way.
+    if (std::isfinite(old) && std::abs(depth - old) <= kDepthMargin * std::max(depth, old)) {
+        img.ambiguous[i] = 1;
+    }
+    if (depth < old) {  // LESS: on a tie the first drawn stays
+        img.color[i] = color;
+        img.depth[i] = depth;
+    }
+}
+
+// Point where the segment inside→outside meets w = near. Always computed from the inside vertex
+// so the fast path, doing the same, gets the same point whichever way the edge is walked.
+Vertex intersectNear(const Vertex& in, double dIn, const Vertex& out, double dOut) {
+    const double t = dIn / (dIn - dOut);
+    return {in.clip + t * (out.clip - in.clip), in.color + t * (out.color - in.color)};
+}
+
+// Sutherland–Hodgman against w >= near, walking edges v0→v1, v1→v2, v2→v0: an inside start
+// vertex is kept, a crossing edge adds its intersection. The fan that follows starts at the
+// first output vertex, so this order decides how a clipped quad is split (it matters for affine
+// colours) and the fast path must walk the edges the same way.
+Polygon clipNear(const std::array<Vertex, 3>& tri, double nearPlane) {
+    Polygon poly;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Vertex& a = tri[i];
+        const Vertex& b = tri[(i + 1) % 3];
+        const double da = a.clip.w - nearPlane;
+        const double db = b.clip.w - nearPlane;
+        const bool aIn = da >= 0.0;
+        const bool bIn = db >= 0.0;
+        if (aIn) poly.v[poly.count++] = a;
+        if (aIn != bIn) {
+            poly.v[poly.count++] = aIn ? intersectNear(a, da, b, db) : intersectNear(b, db, a, da);
+        }
+    }
+    return poly;
+}
+
+// E_ab(p): twice the signed area of (a, b, p); positive on the inside of a triangle with A > 0.
+double edgeFunction(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+// Top-left rule for A > 0 on a y-down screen: a top edge runs exactly horizontal towards +x, a
+// left edge goes up (towards -y). Pixel centres exactly on such an edge belong to the triangle,
+// so two triangles sharing an edge cover each centre on it exactly once.
+bool isTopLeft(const glm::dvec2& a, const glm::dvec2& b) {
+    const double dy = b.y - a.y;
+    const double dx = b.x - a.x;
+    return dy < 0.0 || (dy == 0.0 && dx > 0.0);
+}
+
+// Pixels whose centres lie in [lo, hi] along one axis, clamped to [0, size-1]; first > last when
+// empty. Computed in double so absurd coordinates (or NaN) never overflow an int.
+std::pair<int, int> pixelSpan(double lo, double hi, int size) {
+    const double first = std::max(std::ceil(lo - 0.5), 0.0);
+    const double last = std::min(std::floor(hi - 0.5), static_cast<double>(size - 1));
+    if (!(first <= last)) return {0, -1};
+    return {static_cast<int>(first), static_cast<int>(last)};
+}
+
+// Rule 8(a): the snapped edges of the fast path lie within 1/256 px of ours, so centres that
+// close to an edge (and not clearly outside) may be covered by this triangle or its neighbour.
+void markEdgeAmbiguity(Image& img, const std::array<glm::dvec2, 3>& s) {
+    std::array<double, 3> len{};
+    for (std::size_t k = 0; k < 3; ++k) len[k] = glm::length(s[(k + 1) % 3] - s[k]);
+    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}) - 1.0,
+                                    std::max({s[0].x, s[1].x, s[2].x}) + 1.0, img.width);
+    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}) - 1.0,
+                                    std::max({s[0].y, s[1].y, s[2].y}) + 1.0, img.height);
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const glm::dvec2 p{x + 0.5, y + 0.5};
+            double nearest = kInf;
+            bool inGrown = true;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double dist = edgeFunction(s[k], s[(k + 1) % 3], p) / len[k];
+                inGrown = inGrown && dist >= -kSnap;
+                nearest = std::min(nearest, std::abs(dist));
+            }
+            if (inGrown && nearest <= kSnap) img.ambiguous[pixelIndex(img, x, y)] = 1;
+        }
+    }
+}
+
+// Rule 4 for one fan triangle in clip space.
+void rasterizeTriangle(Image& img, const RenderSettings& settings, std::array<Vertex, 3> v) {
+    std::array<glm::dvec2, 3> s{};
+    for (std::size_t i = 0; i < 3; ++i) s[i] = glm::dvec2(v[i].clip) / v[i].clip.w;
+    double area = edgeFunction(s[0], s[1], s[2]);
+    if (area == 0.0 || !std::isfinite(area)) return;
+    // Mesh triangles are counter-clockwise seen from outside; on a y-down screen that is A < 0.
+    if (settings.cullBackFaces && area > 0.0) return;
+    if (area < 0.0) {
+        std::swap(v[1], v[2]);
+        std::swap(s[1], s[2]);
+        area = -area;
+    }
+    markEdgeAmbiguity(img, s);
+
+    const std::array<bool, 3> topLeft{isTopLeft(s[1], s[2]), isTopLeft(s[2], s[0]),
+                                      isTopLeft(s[0], s[1])};
+    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}),
+                                    std::max({s[0].x, s[1].x, s[2].x}), img.width);
+    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}),
+                                    std::max({s[0].y, s[1].y, s[2].y}), img.height);
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const glm::dvec2 p{x + 0.5, y + 0.5};
+            // e[i] is the edge opposite vertex i, so e[i] / area is vertex i's barycentric.
+            const std::array<double, 3> e{edgeFunction(s[1], s[2], p), edgeFunction(s[2], s[0], p),
+                                          edgeFunction(s[0], s[1], p)};
+            bool covered = true;
+            for (std::size_t k = 0; k < 3; ++k) {
+                covered = covered && (e[k] > 0.0 || (e[k] == 0.0 && topLeft[k]));
+            }
+            if (!covered) continue;
+
+            double q = 0.0;  // interpolated 1/w: affine in screen space
+            glm::dvec3 affine{0.0};
+            glm::dvec3 overW{0.0};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double lambda = e[k] / area;
+                q += lambda / v[k].clip.w;
+                affine += lambda * v[k].color;
+                overW += (lambda / v[k].clip.w) * v[k].color;
+            }
+            const glm::dvec3 color = settings.interp == Interp::Affine ? affine : overW / q;
+            shade(img, settings.shader, x, y, 1.0 / q, color);
+        }
+    }
+}
+
+// floor(a / b) for b > 0, rounding towards -inf unlike C++'s truncating division.
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
+    const std::int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+// The pixels floor(v) may become when v moves by up to 1/256 px: one, or two next to each other.
+std::array<std::int64_t, 2> floorCandidates(double v) {
+    return {static_cast<std::int64_t>(std::floor(v - kSnap)),
+            static_cast<std::int64_t>(std::floor(v + kSnap))};
+}
+
+struct LinePixel {
+    std::int64_t x, y, k;
+};
+
+// Pixels of the integer line (x0, y0)-(x1, y1) that lie in the image, with their step index k
+// of n = max(|dx|, |dy|), endpoints included.
+std::vector<LinePixel> linePixels(const Image& img, std::int64_t x0, std::int64_t y0,
+                                  std::int64_t x1, std::int64_t y1, std::int64_t& n) {
+    const std::int64_t dx = x1 - x0;
+    const std::int64_t dy = y1 - y0;
+    n = std::max(std::abs(dx), std::abs(dy));
+    std::vector<LinePixel> pixels;
+    if (n == 0) {
+        if (inImage(img, x0, y0)) pixels.push_back({x0, y0, 0});
+        return pixels;
+    }
+    const bool xMajor = std::abs(dx) >= std::abs(dy);
+    const std::int64_t major0 = xMajor ? x0 : y0;
+    const std::int64_t minor0 = xMajor ? y0 : x0;
+    const std::int64_t dMinor = xMajor ? dy : dx;
+    const std::int64_t step = (xMajor ? dx : dy) > 0 ? 1 : -1;
+    const std::int64_t majorSize = xMajor ? img.width : img.height;
+    // Only the k whose major coordinate major0 + k·step is inside the image: a clipped line may
+    // be millions of pixels long.
+    std::int64_t kFirst = step > 0 ? -major0 : major0 - (majorSize - 1);
+    std::int64_t kLast = step > 0 ? majorSize - 1 - major0 : major0;
+    kFirst = std::max<std::int64_t>(kFirst, 0);
+    kLast = std::min(kLast, n);
+    for (std::int64_t k = kFirst; k <= kLast; ++k) {
+        const std::int64_t major = major0 + k * step;
+        // Round k·dMinor/n to nearest, ties towards +inf: integer Bresenham in closed form.
+        const std::int64_t minor = minor0 + floorDiv(2 * k * dMinor + n, 2 * n);
+        const LinePixel p = xMajor ? LinePixel{major, minor, k} : LinePixel{minor, major, k};
+        if (inImage(img, p.x, p.y)) pixels.push_back(p);
+    }
+    return pixels;
+}
+
+// Rule 6 for one segment in clip space.
+void drawSegment(Image& img, const RenderSettings& settings, Vertex a, Vertex b, double nearPlane) {
+    const double da = a.clip.w - nearPlane;
+    const double db = b.clip.w - nearPlane;
+    if (!(da >= 0.0) && !(db >= 0.0)) return;
+    if (!(da >= 0.0)) a = intersectNear(b, db, a, da);
+    if (!(db >= 0.0)) b = intersectNear(a, da, b, db);
+
+    const glm::dvec2 s0 = glm::dvec2(a.clip) / a.clip.w;
+    const glm::dvec2 s1 = glm::dvec2(b.clip) / b.clip.w;
+    for (const double c : {s0.x, s0.y, s1.x, s1.y}) {
+        if (!(std::abs(c) < kMaxLineCoord)) return;
+    }
+
+    std::int64_t n = 0;
+    const std::vector<LinePixel> pixels = linePixels(
+        img, static_cast<std::int64_t>(std::floor(s0.x)),
+        static_cast<std::int64_t>(std::floor(s0.y)), static_cast<std::int64_t>(std::floor(s1.x)),
+        static_cast<std::int64_t>(std::floor(s1.y)), n);
+    for (const LinePixel& p : pixels) {
+        // Attributes at t = k/n along the line, the same for steep and shallow lines.
+        const double t = n == 0 ? 0.0 : static_cast<double>(p.k) / static_cast<double>(n);
+        const double q = (1.0 - t) / a.clip.w + t / b.clip.w;
+        const glm::dvec3 color =
+            settings.interp == Interp::Affine
+                ? (1.0 - t) * a.color + t * b.color
+                : ((1.0 - t) / a.clip.w * a.color + t / b.clip.w * b.color) / q;
+        shade(img, settings.shader, p.x, p.y, 1.0 / q, color);
+    }
+
+    // Rule 8(c): an endpoint within 1/256 px of a pixel border may land in either pixel, which
+    // moves (and re-steps) the whole line: flag every pixel of every line the endpoints could
+    // give. For most lines all candidates are the same and nothing is flagged.
+    const auto cx0 = floorCandidates(s0.x), cy0 = floorCandidates(s0.y);
+    const auto cx1 = floorCandidates(s1.x), cy1 = floorCandidates(s1.y);
+    if (cx0[0] == cx0[1] && cy0[0] == cy0[1] && cx1[0] == cx1[1] && cy1[0] == cy1[1]) return;
+    for (const std::int64_t x0 : cx0) {
+        for (const std::int64_t y0 : cy0) {
+            for (const std::int64_t x1 : cx1) {
+                for (const std::int64_t y1 : cy1) {
+                    std::int64_t unused = 0;
+                    for (const LinePixel& p : linePixels(img, x0, y0, x1, y1, unused)) {
+                        img.ambiguous[pixelIndex(img, p.x, p.y)] = 1;
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Rule 7: one square per vertex.
+void drawPoint(Image& img, const RenderSettings& settings, const Vertex& v, double nearPlane) {
+    if (!(v.clip.w >= nearPlane)) return;
+    const glm::dvec2 s = glm::dvec2(v.clip) / v.clip.w;
+    if (!(std::abs(s.x) < kMaxLineCoord && std::abs(s.y) < kMaxLineCoord)) return;
+    const auto px = static_cast<std::int64_t>(std::floor(s.x));
+    const auto py = static_cast<std::int64_t>(std::floor(s.y));
+    // Odd sizes are centred; even sizes put the extra pixel on the +x/+y side.
+    const std::int64_t lo = -(static_cast<std::int64_t>(settings.pointSize) - 1) / 2;
+    const std::int64_t hi = lo + settings.pointSize - 1;
+    for (std::int64_t y = py + lo; y <= py + hi; ++y) {
+        for (std::int64_t x = px + lo; x <= px + hi; ++x) {
+            if (inImage(img, x, y)) shade(img, settings.shader, x, y, v.clip.w, v.color);
+        }
+    }
+    // Rule 8(c): near a pixel border the square may sit one pixel over; flag both positions.
+    const auto cx = floorCandidates(s.x), cy = floorCandidates(s.y);
+    if (cx[0] == cx[1] && cy[0] == cy[1]) return;
+    for (std::int64_t y = cy[0] + lo; y <= cy[1] + hi; ++y) {
+        for (std::int64_t x = cx[0] + lo; x <= cx[1] + hi; ++x) {
+            if (inImage(img, x, y)) img.ambiguous[pixelIndex(img, x, y)] = 1;
+        }
+    }
+}
+
+// Rule 5, Depth shader: after everything is drawn, depth becomes colour, near dark, far bright.
+void mapDepthToColor(Image& img) {
+    double dmin = kInf;
+    double dmax = -kInf;
+    for (const double d : img.depth) {
+        if (!std::isfinite(d)) continue;
+        dmin = std::min(dmin, d);
+        dmax = std::max(dmax, d);
+    }
+    for (std::size_t i = 0; i < img.depth.size(); ++i) {
+        const double d = img.depth[i];
+        if (!std::isfinite(d)) continue;
+        const double t = dmax > dmin ? (d - dmin) / (dmax - dmin) : 0.0;
+        img.color[i] = viridis(t);
+    }
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> Image::toRgba() const {
+    auto channel = [](double c) -> std::uint32_t {
+        if (std::isnan(c)) return 0;
+        return static_cast<std::uint32_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
+    };
+    std::vector<std::uint32_t> out(color.size());
+    for (std::size_t i = 0; i < color.size(); ++i) {
+        out[i] = packRgba(channel(color[i].r), channel(color[i].g), channel(color[i].b));
+    }
+    return out;
+}
+
+std::vector<glm::dvec4> projectScene(const Scene& scene) {
+    const Camera& cam = scene.camera;
+    const glm::dvec3 z = glm::normalize(cam.look - cam.eye);
+    const glm::dvec3 x = glm::normalize(glm::cross(cam.up, z));
+    const glm::dvec3 y = glm::cross(z, x);
+    const double cx = cam.width / 2.0;
+    const double cy = cam.height / 2.0;
+    std::vector<glm::dvec4> clip;
+    clip.reserve(scene.mesh.positions.size());
+    for (const glm::vec3& position : scene.mesh.positions) {
+        const glm::dvec3 d = glm::dvec3(position) - cam.eye;
+        const glm::dvec3 pc{glm::dot(x, d), glm::dot(y, d), glm::dot(z, d)};
+        // K·p_c, with the divide by Z left to the rasterizer (and w = Z kept for depth).
+        clip.emplace_back(cam.focal * pc.x + cx * pc.z, cam.focal * pc.y + cy * pc.z, pc.z, pc.z);
+    }
+    return clip;
+}
+
+Image render(const Scene& scene, const RenderSettings& settings) {
+    const std::vector<glm::dvec4> clip = projectScene(scene);
+    std::vector<glm::dvec3> colors(scene.mesh.colors.begin(), scene.mesh.colors.end());
+    Input input;
+    input.clip = clip;
+    input.colors = colors;
+    input.indices = scene.mesh.indices;
+    input.nearPlane = resolveNearPlane(settings, scene.mesh);
+    return draw(input, settings, scene.camera.width, scene.camera.height);
+}
+
+Image draw(const Input& input, const RenderSettings& settings, int width, int height) {
+    Image img;
+    img.width = std::max(width, 0);
+    img.height = std::max(height, 0);
+    const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
+    const glm::dvec3 background{((settings.background >> 16) & 0xFF) / 255.0,
+                                ((settings.background >> 8) & 0xFF) / 255.0,
+                                (settings.background & 0xFF) / 255.0};
+    img.color.assign(pixels, background);
+    img.depth.assign(pixels, kInf);
+    img.ambiguous.assign(pixels, 0);
+
+    const std::size_t vertexCount = input.clip.size();
+    auto vertex = [&](std::uint32_t i) {
+        const glm::dvec3 color = input.colors.empty() ? glm::dvec3{1.0} : input.colors[i];
+        return Vertex{input.clip[i], color};
+    };
+    // Indices past the vertex array are ignored rather than read out of bounds.
+    auto valid = [&](std::uint32_t i) { return i < vertexCount; };
+
+    switch (settings.mode) {
+        case DrawMode::Solid:
+            for (std::size_t t = 0; t + 2 < input.indices.size(); t += 3) {
+                const std::uint32_t i0 = input.indices[t];
+                const std::uint32_t i1 = input.indices[t + 1];
+                const std::uint32_t i2 = input.indices[t + 2];
+                if (!valid(i0) || !valid(i1) || !valid(i2)) continue;
+                const Polygon poly =
+                    clipNear({vertex(i0), vertex(i1), vertex(i2)}, input.nearPlane);
+                for (std::size_t k = 1; k + 1 < poly.count; ++k) {
+                    rasterizeTriangle(img, settings, {poly.v[0], poly.v[k], poly.v[k + 1]});
+                }
+            }
+            break;
+        case DrawMode::Wireframe: {
+            // The same list as facet::uniqueEdges: each undirected edge once as (low, high),
+            // sorted, so every edge is drawn once and in a fixed order.
+            std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+            for (std::size_t t = 0; t + 2 < input.indices.size(); t += 3) {
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const std::uint32_t a = input.indices[t + k];
+                    const std::uint32_t b = input.indices[t + (k + 1) % 3];
+                    if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
+                }
+            }
+            std::sort(edges.begin(), edges.end());
+            edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+            for (const auto& [a, b] : edges) {
+                if (!valid(a) || !valid(b)) continue;
+                drawSegment(img, settings, vertex(a), vertex(b), input.nearPlane);
+            }
+            break;
+        }
+        case DrawMode::Vertices:
+            for (std::uint32_t i = 0; i < vertexCount; ++i) {
+                drawPoint(img, settings, vertex(i), input.nearPlane);
+            }
+            break;
+    }
+
+    if (settings.shader == ShaderKind::Depth) mapDepthToColor(img);
+    return img;
+}
+
+}  // namespace facet::reference

@@ -1,0 +1,62 @@
+#include "facet/settings.hpp"
+
+#include <array>
+#include <utility>
+
+namespace facet {
+namespace {
+
+// One table per enum keeps parsing and printing in step.
+constexpr std::array<std::pair<std::string_view, DrawMode>, 3> kModes{{
+    {"vertices", DrawMode::Vertices},
+    {"wireframe", DrawMode::Wireframe},
+    {"solid", DrawMode::Solid},
+}};
+constexpr std::array<std::pair<std::string_view, ShaderKind>, 3> kShaders{{
+    {"simple", ShaderKind::Simple},
+    {"painter", ShaderKind::Painter},
+    {"depth", ShaderKind::Depth},
+}};
+constexpr std::array<std::pair<std::string_view, Interp>, 2> kInterps{{
+    {"affine", Interp::Affine},
+    {"perspective", Interp::Perspective},
+}};
+
+template <class E, std::size_t N>
+std::optional<E> lookup(const std::array<std::pair<std::string_view, E>, N>& table,
+                        std::string_view name) {
+    for (const auto& [key, value] : table)
+        if (key == name) return value;
+    return std::nullopt;
+}
+
+template <class E, std::size_t N>
+std::string_view nameOf(const std::array<std::pair<std::string_view, E>, N>& table, E value) {
+    for (const auto& [key, v] : table)
+        if (v == value) return key;
+    return "?";
+}
+
+}  // namespace
+
+std::optional<DrawMode> parseDrawMode(std::string_view name) {
+    return lookup(kModes, name);
+}
+std::optional<ShaderKind> parseShader(std::string_view name) {
+    return lookup(kShaders, name);
+}
+std::optional<Interp> parseInterp(std::string_view name) {
+    return lookup(kInterps, name);
+}
+
+std::string_view toString(DrawMode mode) {
+    return nameOf(kModes, mode);
+}
+std::string_view toString(ShaderKind shader) {
+    return nameOf(kShaders, shader);
+}
+std::string_view toString(Interp interp) {
+    return nameOf(kInterps, interp);
+}
+
+}  // namespace facet

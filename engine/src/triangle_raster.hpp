@@ -1,0 +1,114 @@
+#pragma once
+// Triangle coverage on a fixed-point sub-pixel grid (conventions §5).
+//
+// Vertices are snapped to 1/256 px. Edge functions are then exact 64-bit integers, so the
+// top-left rule is decided without rounding: two triangles sharing an edge see the same integers
+// with opposite signs, and every pixel centre on the edge goes to exactly one of them.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/vec2.hpp>
+
+namespace facet::detail {
+
+/// Fractional bits of the sub-pixel grid.
+inline constexpr int kSubPixelBits = 8;
+inline constexpr std::int64_t kSubPixel = std::int64_t{1} << kSubPixelBits;
+
+/// Pixel rectangle [x0, x1] × [y0, y1], inclusive.
+struct PixelRect {
+    int x0, y0, x1, y1;
+    bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+/// A snapped triangle ready for coverage: three edges and a pixel bounding box.
+struct CoverageSetup {
+    // Edge i runs from vertex i to vertex i+1 (mod 3); value at the bbox's first pixel centre,
+    // bias folded in, and steps per pixel in x and y.
+    std::int64_t e0[3];
+    std::int64_t stepX[3];
+    std::int64_t stepY[3];
+    PixelRect box;
+    std::int64_t area2;  ///< twice the signed area in 1/65536 px², after orientation fix (> 0)
+};
+
+/// Result of snapping: which way the triangle faces on screen.
+enum class Facing { Degenerate, Front, Back };
+
+/// Snaps a continuous pixel-space coordinate to the sub-pixel grid.
+inline std::int64_t snap(double v) {
+    return std::llround(v * static_cast<double>(kSubPixel));
+}
+
+/// Floor division by the grid size (arithmetic shift rounds toward -inf in C++20).
+inline std::int64_t floorDivSub(std::int64_t v) {
+    return v >> kSubPixelBits;
+}
+
+/// Sets up coverage of the snapped triangle (x[i], y[i]) (already in grid units) within `clip`.
+/// Returns the facing; only Front/Back triangles get a usable `out`. Back means clockwise on a
+/// y-up screen (positive area in y-down pixel space), matching the reference path.
+inline Facing setupCoverage(const std::int64_t (&xs)[3], const std::int64_t (&ys)[3],
+                            const PixelRect& clip, CoverageSetup& out) {
+    std::int64_t x[3] = {xs[0], xs[1], xs[2]};
+    std::int64_t y[3] = {ys[0], ys[1], ys[2]};
+    std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    if (area == 0) return Facing::Degenerate;
+    const Facing facing = area < 0 ? Facing::Front : Facing::Back;
+    if (area < 0) {  // make the winding positive so "inside" is E >= 0 for all edges
+        std::swap(x[1], x[2]);
+        std::swap(y[1], y[2]);
+        area = -area;
+    }
+    out.area2 = area;
+
+    const std::int64_t minX = std::min({x[0], x[1], x[2]}), maxX = std::max({x[0], x[1], x[2]});
+    const std::int64_t minY = std::min({y[0], y[1], y[2]}), maxY = std::max({y[0], y[1], y[2]});
+    const std::int64_t half = kSubPixel / 2;
+    // Pixel i's centre is at i*256 + 128: first centre >= min, last centre <= max.
+    const std::int64_t bx0 =
+        std::max<std::int64_t>(clip.x0, floorDivSub(minX - half + kSubPixel - 1));
+    const std::int64_t bx1 = std::min<std::int64_t>(clip.x1, floorDivSub(maxX - half));
+    const std::int64_t by0 =
+        std::max<std::int64_t>(clip.y0, floorDivSub(minY - half + kSubPixel - 1));
+    const std::int64_t by1 = std::min<std::int64_t>(clip.y1, floorDivSub(maxY - half));
+    out.box = {static_cast<int>(bx0), static_cast<int>(by0), static_cast<int>(bx1),
+               static_cast<int>(by1)};
+    if (out.box.empty()) return facing;
+
+    const std::int64_t px = bx0 * kSubPixel + half;
+    const std::int64_t py = by0 * kSubPixel + half;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const std::int64_t dx = x[j] - x[i];
+        const std::int64_t dy = y[j] - y[i];
+        // Top edge (horizontal, going right) or left edge (going up): centres on it are inside.
+        const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
+        out.e0[i] = dx * (py - y[i]) - dy * (px - x[i]) - (topLeft ? 0 : 1);
+        out.stepX[i] = -dy * kSubPixel;
+        out.stepY[i] = dx * kSubPixel;
+    }
+    return facing;
+}
+
+/// Calls visit(x, y) for every covered pixel centre, row by row, left to right.
+template <class Visit>
+inline void forEachCovered(const CoverageSetup& s, Visit&& visit) {
+    std::int64_t row[3] = {s.e0[0], s.e0[1], s.e0[2]};
+    for (int y = s.box.y0; y <= s.box.y1; ++y) {
+        std::int64_t e[3] = {row[0], row[1], row[2]};
+        for (int x = s.box.x0; x <= s.box.x1; ++x) {
+            if ((e[0] | e[1] | e[2]) >= 0) visit(x, y);
+            e[0] += s.stepX[0];
+            e[1] += s.stepX[1];
+            e[2] += s.stepX[2];
+        }
+        row[0] += s.stepY[0];
+        row[1] += s.stepY[1];
+        row[2] += s.stepY[2];
+    }
+}
+
+}  // namespace facet::detail
