@@ -80,8 +80,7 @@ std::vector<Case> allCases() {
     }
     // Close-ups with the eye near or inside the mesh: geometry crosses the near plane and runs
     // far beyond the image (near clipping, guard band, very long lines).
-    for (const std::string scene :
-         {"course/example2", "scenes/bunny_1280x720", "scenes/spot_1280x720"}) {
+    for (const char* scene : {"course/example2", "scenes/bunny_1280x720", "scenes/spot_1280x720"}) {
         for (const double dolly : {0.3, 0.1, 0.02}) {
             for (const Interp interp : {Interp::Affine, Interp::Perspective}) {
                 for (const DrawMode mode : {DrawMode::Wireframe, DrawMode::Solid}) {

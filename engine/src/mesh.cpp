@@ -25,16 +25,14 @@ Bounds computeBounds(const Mesh& mesh) {
     return b;
 }
 
-std::vector<std::uint32_t> uniqueEdges(const Mesh& mesh) {
+void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges) {
     // One 64-bit key per edge sorts lexicographically by (lower, higher) and dedups cheaply.
     std::vector<std::uint64_t> keys;
-    keys.reserve(mesh.indices.size());
-    const std::size_t triangles = mesh.triangleCount();
-    for (std::size_t t = 0; t < triangles; ++t) {
-        const std::uint32_t* v = &mesh.indices[3 * t];
-        for (int e = 0; e < 3; ++e) {
-            const std::uint32_t a = v[e];
-            const std::uint32_t b = v[(e + 1) % 3];
+    keys.reserve(indices.size());
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        for (std::size_t e = 0; e < 3; ++e) {
+            const std::uint32_t a = indices[t + e];
+            const std::uint32_t b = indices[t + (e + 1) % 3];
             if (a == b) continue;  // a collapsed edge draws nothing a vertex would not
             keys.push_back((std::uint64_t{std::min(a, b)} << 32) | std::max(a, b));
         }
@@ -42,12 +40,17 @@ std::vector<std::uint32_t> uniqueEdges(const Mesh& mesh) {
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 
-    std::vector<std::uint32_t> edges;
+    edges.clear();
     edges.reserve(2 * keys.size());
     for (const std::uint64_t k : keys) {
         edges.push_back(static_cast<std::uint32_t>(k >> 32));
         edges.push_back(static_cast<std::uint32_t>(k));
     }
+}
+
+std::vector<std::uint32_t> uniqueEdges(const Mesh& mesh) {
+    std::vector<std::uint32_t> edges;
+    uniqueEdges(mesh.indices, edges);
     return edges;
 }
 

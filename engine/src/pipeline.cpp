@@ -235,24 +235,6 @@ void drawTriangles(const DrawInput& in, bool cull, int width, int height, Sink& 
     }
 }
 
-/// Sorted unique undirected edges of a triangle list, as (low, high) pairs.
-void collectEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges) {
-    std::vector<std::uint64_t> keys;
-    keys.reserve(indices.size());
-    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint64_t a = indices[t + k], b = indices[t + (k + 1) % 3];
-            keys.push_back(a < b ? (a << 32 | b) : (b << 32 | a));
-        }
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    edges.clear();
-    for (const std::uint64_t k : keys) {
-        edges.push_back(static_cast<std::uint32_t>(k >> 32));
-        edges.push_back(static_cast<std::uint32_t>(k & 0xFFFFFFFFu));
-    }
-}
-
 /// Wireframe: each unique edge once, near-clipped, Bresenham with interpolated attributes.
 template <ShaderKind S, Interp I>
 void drawLines(const DrawInput& in, std::span<const std::uint32_t> edges, Framebuffer& fb,
@@ -377,7 +359,7 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
                 break;
             }
             case DrawMode::Wireframe:
-                collectEdges(input.indices, edges_);
+                uniqueEdges(input.indices, edges_);
                 drawLines<S, I>(input, edges_, frame, stats);
                 break;
             case DrawMode::Vertices:

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,11 @@ struct Bounds {
 /// Bounds of all positions.
 Bounds computeBounds(const Mesh& mesh);
 
-/// Unique undirected edges of the triangles, each once as (lower index, higher index), sorted.
+/// Unique undirected edges of the triangles, each once as (lower index, higher index), sorted;
+/// collapsed edges (a == b) are left out.
 std::vector<std::uint32_t> uniqueEdges(const Mesh& mesh);
+
+/// The same for a bare index list, written into `edges` (its capacity is reused).
+void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges);
 
 }  // namespace facet

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages facet needs to build, test and run; a no-op when all are present.
+# Installs the Debian 12 packages facet needs to build, test and run (apt-get, as root or through
+# sudo); does nothing when they are all present.
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libepoxy-dev libegl-dev libgl1-mesa-dri
-  xvfb xauth xdotool imagemagick)
+  ninja-build)
+# Extra packages named on the command line (e.g. doxygen for make doc).
+pkgs+=("$@")
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
