@@ -114,7 +114,7 @@ TEST_F(Cli, BadInputGivesOneLineOnStderrAndExitCode2) {
 
 TEST_F(Cli, UnwritableOutputIsAFailureNotACrash) {
     const Outcome r = run(std::string("render ") + FACET_ASSETS_DIR + "/default.scene -o " +
-                      dir.string() + "/missing/folder/x.png --size 64x64");
+                          dir.string() + "/missing/folder/x.png --size 64x64");
     EXPECT_EQ(r.exitCode, 1) << r.out;
     EXPECT_NE(r.out.find("cannot write"), std::string::npos) << r.out;
 }
