@@ -30,6 +30,7 @@
 #include "facet/scene.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
+#include "image_compare.hpp"
 
 namespace {
 
@@ -113,23 +114,6 @@ const facet::Scene* loadCached(const std::string& path, std::string& error) {
     return it->second.get();
 }
 
-int channelDiff(std::uint32_t a, std::uint32_t b) {
-    int worst = 0;
-    for (int shift = 0; shift < 24; shift += 8) {
-        const int ca = static_cast<int>((a >> shift) & 0xFF);
-        const int cb = static_cast<int>((b >> shift) & 0xFF);
-        worst = std::max(worst, std::abs(ca - cb));
-    }
-    return worst;
-}
-
-std::string hex(std::uint32_t rgba) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", rgba & 0xFF, (rgba >> 8) & 0xFF,
-                  (rgba >> 16) & 0xFF);
-    return buf;
-}
-
 // Names the case in gtest's messages instead of dumping its bytes.
 void PrintTo(const Case& c, std::ostream* os) {
     *os << caseName(c);
@@ -160,60 +144,26 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     settings.cullBackFaces = c.cull;
 
     const facet::reference::Image ref = facet::reference::render(*scene, settings);
-    const std::vector<std::uint32_t> refRgba = ref.toRgba();
     facet::Renderer renderer;
     facet::Framebuffer fast;
     const facet::RenderStats stats = renderer.render(*scene, settings, fast);
     ASSERT_EQ(fast.width, ref.width);
     ASSERT_EQ(fast.height, ref.height);
-    ASSERT_EQ(fast.color.size(), refRgba.size());
 
-    // Simple never writes depth, so there coverage can only be told by colour.
-    const std::uint32_t background = facet::rgbaFromHex(settings.background);
-    const bool byColour = c.shader == ShaderKind::Simple;
-    std::size_t compared = 0, ambiguous = 0, differing = 0, offByOne = 0, covered = 0;
-    int maxDiff = 0;
-    std::ostringstream examples;
-    int shown = 0;
-    for (std::size_t i = 0; i < refRgba.size(); ++i) {
-        if (ref.ambiguous[i]) {
-            ++ambiguous;
-            continue;
-        }
-        ++compared;
-        const bool refCovered = byColour ? refRgba[i] != background : std::isfinite(ref.depth[i]);
-        const bool fastCovered =
-            byColour ? fast.color[i] != background : std::isfinite(fast.depth[i]);
-        const int diff = channelDiff(refRgba[i], fast.color[i]);
-        covered += refCovered ? 1 : 0;
-        if (refCovered != fastCovered) {
-            ++differing;
-        } else {
-            maxDiff = std::max(maxDiff, diff);
-            offByOne += diff == 1 ? 1 : 0;
-        }
-        if ((refCovered != fastCovered || diff > 1) && shown < 8) {
-            ++shown;
-            const int x = static_cast<int>(i % static_cast<std::size_t>(ref.width));
-            const int y = static_cast<int>(i / static_cast<std::size_t>(ref.width));
-            examples << "\n  pixel (" << x << "," << y << "): ref " << hex(refRgba[i]) << " depth "
-                     << ref.depth[i] << ", fast " << hex(fast.color[i]) << " depth "
-                     << fast.depth[i];
-        }
-    }
-
+    const facet::test::Comparison r =
+        facet::test::compare(fast, ref, c.shader, settings.background);
     const std::string name = caseName(c);
     std::printf(
         "[fast-vs-ref] %-44s compared=%zu covered=%zu ambiguous=%zu differing=%zu "
         "maxdiff=%d offby1=%zu clipped=%zu\n",
-        name.c_str(), compared, covered, ambiguous, differing, maxDiff, offByOne,
-        stats.trianglesClipped);
-    RecordProperty("compared", static_cast<int>(compared));
-    RecordProperty("ambiguous", static_cast<int>(ambiguous));
-    RecordProperty("differing", static_cast<int>(differing));
-    RecordProperty("maxdiff", maxDiff);
-    EXPECT_EQ(differing, 0u) << name << examples.str();
-    EXPECT_LE(maxDiff, 1) << name << examples.str();
+        name.c_str(), r.compared, r.covered, r.ambiguous, r.coverageDiffers, r.maxColorDiff,
+        r.offByOne, stats.trianglesClipped);
+    RecordProperty("compared", static_cast<int>(r.compared));
+    RecordProperty("ambiguous", static_cast<int>(r.ambiguous));
+    RecordProperty("differing", static_cast<int>(r.coverageDiffers));
+    RecordProperty("maxdiff", r.maxColorDiff);
+    EXPECT_EQ(r.coverageDiffers, 0u) << name << r.examples;
+    EXPECT_LE(r.maxColorDiff, 1) << name << r.examples;
 }
 
 std::string paramName(const testing::TestParamInfo<Case>& param) {

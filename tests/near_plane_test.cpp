@@ -52,7 +52,8 @@ TEST(NearPlane, CameraThroughTheBunnyStaysFiniteAndMatchesTheReference) {
                     << "frame " << frame << " depth " << d;
             const reference::Image ref = reference::render(scene, s);
             const test::Comparison c = test::compare(fb, ref, s.shader, s.background);
-            EXPECT_EQ(c.coverageDiffers, 0u) << "frame " << frame << " " << toString(interp);
+            EXPECT_EQ(c.coverageDiffers, 0u)
+                << "frame " << frame << " " << toString(interp) << c.examples;
             EXPECT_LE(c.maxColorDiff, 1) << "frame " << frame << " " << toString(interp);
         }
     }
