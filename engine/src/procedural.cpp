@@ -93,7 +93,7 @@ Mesh makeUvSphere(int rings, int sectors) {
             m.uvs.emplace_back(u, v);
         }
     }
-    latticeTriangles(m, sectors, rings, false, true);
+    latticeTriangles(m, sectors, rings, false, false);
     return m;
 }
 

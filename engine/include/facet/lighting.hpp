@@ -1,0 +1,102 @@
+#pragma once
+// The Phong reflection model of conventions §6 at one surface point:
+//
+//     I = Ia·Ka + Id · ( Kd · max(0, n·l) + Ks · max(0, n·h)^s )
+//
+// twice: a plain double version for the reference path, and an inline float version for the
+// fast path's per-vertex (Gouraud) and per-pixel (Phong) shading.
+//
+// Choices the formula leaves open, identical in both versions:
+//  - An undefined direction is the zero vector, never NaN: l when the point is at the light (or a
+//    w = 0 light has xyz = 0), v when the point is at the eye, h when l + v = 0 (the light exactly
+//    behind the point as seen from the eye). A zero n (a vertex with no face, see normals.hpp) or
+//    a zero l gives n·l = 0, so ambient only.
+//  - Diffuse and specular are both zero where n·l ≤ 0: a light behind the surface adds no
+//    highlight even where n·h > 0 (the course code lets it).
+//  - n·h is clamped to [0, 1] before the power: rounding can push it to 1 + ε, and
+//    (1 + ε)^s overflows to +inf for huge s. So any s ≥ 0, including 1e30 and +inf, gives a
+//    finite result: 1 exactly at n = h, 0 elsewhere.
+//  - 0^0 = 1 (std::pow's rule): with s = 0 the specular term is Ks everywhere n·l > 0, even
+//    where n·h ≤ 0 or h is undefined; a constant "highlight" is what an exponent of 0 means.
+//  - No distance attenuation; one light (the .scene format has one).
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "facet/scene.hpp"
+
+namespace facet {
+
+/// Everything §6 needs besides the geometry, as plain fields a UI may change between frames.
+struct LightingParams {
+    double ambient = 1.0;  ///< Ia
+    Light light;           ///< homogeneous position (w = 0: the direction light comes from), Id
+    Material material;     ///< Ka, Kd, Ks, s (all ≥ 0)
+};
+
+/// The scene's lighting fields.
+LightingParams lightingParams(const Scene& scene);
+
+/// Unit vector from `p` towards the light: normalize(xyz / w − p), or normalize(xyz) for w = 0;
+/// zero where undefined.
+glm::dvec3 directionToLight(const glm::dvec3& p, const glm::dvec4& lightPosition);
+
+/// I at point `p` with normal `n` (unit, or zero for none), seen from `eye`. Reference version.
+double lightIntensity(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& eye,
+                      const LightingParams& params);
+
+/// The lit colour clamp(rgb · I, 0, 1).
+inline glm::dvec3 shade(const glm::dvec3& rgb, double intensity) {
+    return glm::clamp(rgb * intensity, 0.0, 1.0);
+}
+
+/// LightingParams folded into the float constants the fast path needs; rebuild it every frame
+/// (it costs a few multiplications) so edits to the parameters show at once.
+struct FastLighting {
+    /// The light's homogeneous position scaled to the same point or direction with w ≥ 0 and
+    /// largest |component| 1, so xyz − w·p is a finite vector towards the light even for a point
+    /// beyond float range (tiny w).
+    glm::vec4 light{0.0f, 0.0f, 1.0f, 0.0f};
+    float ambientTerm = 0.0f;  ///< Ia·Ka
+    float diffuse = 0.0f;      ///< Id·Kd
+    float specular = 0.0f;     ///< Id·Ks
+    float shininess = 1.0f;    ///< s
+};
+
+/// Folds the parameters for the float path.
+FastLighting prepareLighting(const LightingParams& params);
+
+namespace detail {
+/// v / |v|, or zero where |v| = 0: an undefined direction must contribute nothing, not NaN.
+inline glm::vec3 normalizeOrZero(const glm::vec3& v) {
+    const float length2 = glm::dot(v, v);
+    return length2 > 0.0f ? v * (1.0f / std::sqrt(length2)) : glm::vec3(0.0f);
+}
+}  // namespace detail
+
+/// I at point `p` with normal `n` (unit, or zero for none), seen from `eye`. Fast version: same
+/// rules as the double one, agreeing to float rounding.
+inline float lightIntensity(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
+                            const FastLighting& lighting) {
+    // With w ≥ 0, xyz − w·p is w·(light point − p) for a point light and xyz for a directional
+    // one: one expression, no division, no branch on the light's kind.
+    const glm::vec3 l = detail::normalizeOrZero(glm::vec3(lighting.light) - lighting.light.w * p);
+    const glm::vec3 v = detail::normalizeOrZero(eye - p);
+    const glm::vec3 h = detail::normalizeOrZero(l + v);
+    const float nl = glm::dot(n, l);
+    const float nh = std::clamp(glm::dot(n, h), 0.0f, 1.0f);
+    const float lit = lighting.diffuse * nl + lighting.specular * std::pow(nh, lighting.shininess);
+    return lighting.ambientTerm + (nl > 0.0f ? lit : 0.0f);
+}
+
+/// The lit colour clamp(rgb · I, 0, 1).
+inline glm::vec3 shade(const glm::vec3& rgb, float intensity) {
+    return glm::clamp(rgb * intensity, 0.0f, 1.0f);
+}
+
+}  // namespace facet

@@ -1,0 +1,58 @@
+// Vertex normals (conventions §6): area weighting comes for free because the un-normalised cross
+// product (v1 − v0) × (v2 − v0) is twice the triangle's area times its unit normal.
+
+#include "facet/normals.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/geometric.hpp>
+
+namespace facet {
+
+namespace {
+
+/// Below this fraction of the summed magnitudes a vertex's sum is cancellation noise: its
+/// direction would be rounding error, so it gets no normal rather than an arbitrary one.
+/// Double sums of float-derived products carry relative error ~1e-16, far below this.
+constexpr double kCancelled = 1e-9;
+
+}  // namespace
+
+std::vector<glm::vec3> computeVertexNormals(const Mesh& mesh) {
+    const std::size_t n = mesh.vertexCount();
+    // Double accumulation: a vertex of a fine mesh sums many small, nearly parallel vectors.
+    std::vector<glm::dvec3> sum(n, glm::dvec3(0.0));
+    std::vector<double> magnitude(n, 0.0);
+
+    const std::size_t triangles = mesh.triangleCount();
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t* v = &mesh.indices[3 * t];
+        assert(v[0] < n && v[1] < n && v[2] < n);
+        const glm::dvec3 p0(mesh.positions[v[0]]);
+        const glm::dvec3 p1(mesh.positions[v[1]]);
+        const glm::dvec3 p2(mesh.positions[v[2]]);
+        const glm::dvec3 weighted = glm::cross(p1 - p0, p2 - p0);
+        const double length = glm::length(weighted);
+        for (int k = 0; k < 3; ++k) {
+            sum[v[k]] += weighted;
+            magnitude[v[k]] += length;
+        }
+    }
+
+    std::vector<glm::vec3> normals(n, glm::vec3(0.0f));
+    for (std::size_t i = 0; i < n; ++i) {
+        const double length = glm::length(sum[i]);
+        // Also false for 0 = 0 (no face of non-zero area), so the division below is safe.
+        if (length > kCancelled * magnitude[i]) normals[i] = glm::vec3(sum[i] / length);
+    }
+    return normals;
+}
+
+float normalDisplayLength(const Mesh& mesh) {
+    return computeBounds(mesh).diagonal() / 100.0f;
+}
+
+}  // namespace facet

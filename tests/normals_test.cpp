@@ -1,0 +1,225 @@
+// Vertex normals (conventions §6) against hand-computed values: the course cube, a regular
+// tetrahedron, degenerate input, and a fine sphere; plus the normals display length (§8).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "facet/mesh.hpp"
+#include "facet/mesh_io.hpp"
+#include "facet/normals.hpp"
+#include "facet/procedural.hpp"
+
+namespace {
+
+using facet::Mesh;
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Six times the signed volume sums to ∑ p0 · (p1 × p2): positive when the triangles face out.
+double signedVolume(const Mesh& m) {
+    double sum = 0.0;
+    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::dvec3 a(m.positions[m.indices[3 * t]]);
+        const glm::dvec3 b(m.positions[m.indices[3 * t + 1]]);
+        const glm::dvec3 c(m.positions[m.indices[3 * t + 2]]);
+        sum += glm::dot(a, glm::cross(b, c));
+    }
+    return sum / 6.0;
+}
+
+void reverseWinding(Mesh& m) {
+    for (std::size_t t = 0; t < m.triangleCount(); ++t)
+        std::swap(m.indices[3 * t + 1], m.indices[3 * t + 2]);
+}
+
+void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+// The unit cube as the course's cube_multi_color.off triangulates it.
+Mesh courseCube() {
+    Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                   {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    m.indices = {0, 1, 4, 1, 5, 4, 1, 2, 5, 2, 6, 5, 2, 3, 6, 3, 7, 6,
+                 3, 0, 7, 0, 4, 7, 4, 5, 7, 5, 6, 7, 3, 2, 0, 2, 1, 0};
+    return m;
+}
+
+// Every triangle of the cube has area 1/2, so its cross product is exactly its unit outward
+// normal. Grouped by face (checked by hand: (v1 − v0) × (v2 − v0) of each):
+//   y = 0 (0,−1,0): (0,1,4) (1,5,4)     x = 1 (1,0,0):  (1,2,5) (2,6,5)
+//   y = 1 (0,1,0):  (2,3,6) (3,7,6)     x = 0 (−1,0,0): (3,0,7) (0,4,7)
+//   z = 1 (0,0,1):  (4,5,7) (5,6,7)     z = 0 (0,0,−1): (3,2,0) (2,1,0)
+// A corner's sum counts how many triangles of each of its three faces touch it (1 or 2, since
+// each face's diagonal runs through two of its corners):
+//   v0: y0×1, x0×2, z0×2 → (−2,−1,−2), length 3      v1: y0×2, x1×1, z0×1 → (1,−2,−1), √6
+//   v2: x1×2, y1×1, z0×2 → (2,1,−2), length 3        v3: y1×2, x0×1, z0×1 → (−1,2,−1), √6
+//   v4: y0×2, x0×1, z1×1 → (−1,−2,1), √6             v5: y0×1, x1×2, z1×2 → (2,−1,2), length 3
+//   v6: x1×1, y1×2, z1×1 → (1,2,1), √6               v7: y1×1, x0×2, z1×2 → (−2,1,2), length 3
+// (Triangles per corner 5,4,5,4,4,5,4,5: 36 = 12 × 3.)
+const std::vector<glm::vec3> kCubeNormals = {
+    glm::vec3(-2, -1, -2) / 3.0f,
+    glm::vec3(1, -2, -1) / std::sqrt(6.0f),
+    glm::vec3(2, 1, -2) / 3.0f,
+    glm::vec3(-1, 2, -1) / std::sqrt(6.0f),
+    glm::vec3(-1, -2, 1) / std::sqrt(6.0f),
+    glm::vec3(2, -1, 2) / 3.0f,
+    glm::vec3(1, 2, 1) / std::sqrt(6.0f),
+    glm::vec3(-2, 1, 2) / 3.0f,
+};
+
+TEST(Normals, CourseCubeBuiltInCode) {
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(courseCube());
+    ASSERT_EQ(n.size(), 8u);
+    for (std::size_t i = 0; i < 8; ++i) {
+        SCOPED_TRACE(i);
+        expectNear(n[i], kCubeNormals[i], 1e-6f);
+    }
+}
+
+TEST(Normals, CourseCubeFile) {
+    const std::string path = std::string(FACET_SHARED_DIR) + "/data/course/cube_multi_color.off";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "missing " << path;
+    const facet::Result<Mesh> mesh = facet::loadOff(path);
+    ASSERT_TRUE(mesh.ok()) << mesh.error().what();
+    ASSERT_EQ(mesh.value().indices, courseCube().indices);
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(mesh.value());
+    ASSERT_EQ(n.size(), 8u);
+    for (std::size_t i = 0; i < 8; ++i) {
+        SCOPED_TRACE(i);
+        expectNear(n[i], kCubeNormals[i], 1e-6f);
+    }
+}
+
+// Corners of alternate cube vertices: A(1,1,1) B(1,−1,−1) C(−1,1,−1) D(−1,−1,1), centroid 0,
+// every face of the same area. The face opposite a vertex has outward normal −vertex/√3, e.g.
+// (B − A) × (C − A) = (0,−2,−2) × (−2,0,−2) = (4,4,−4) for face ABC, opposite D. A vertex's three
+// faces are the ones opposite the other three, so the sum is −(B + C + D)/√3 · k = A/√3 · k
+// (A + B + C + D = 0): each vertex normal is its own direction from the centroid, A/√3, which is
+// also −(unit normal of the opposite face).
+TEST(Normals, RegularTetrahedronPointsAwayFromCentroid) {
+    Mesh m;
+    m.positions = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    m.indices = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(m);
+    ASSERT_EQ(n.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        SCOPED_TRACE(i);
+        expectNear(n[i], m.positions[i] / std::sqrt(3.0f), 1e-6f);
+    }
+    // Face ABC's unit normal is (1,1,−1)/√3 = −D/√3, so D's normal is its negation.
+    const glm::vec3 abc = glm::normalize(
+        glm::cross(m.positions[1] - m.positions[0], m.positions[2] - m.positions[0]));
+    expectNear(n[3], -abc, 1e-6f);
+}
+
+TEST(Normals, AreaWeighting) {
+    // Vertex 0 is shared by a triangle of area 2 in z = 0 (normal +z) and one of area 1/2 in
+    // x = 0 (normal +x): cross products (0,0,4) and (1,0,0) → (1,0,4)/√17.
+    Mesh m;
+    m.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 1, 0}, {0, 0, 1}};
+    m.indices = {0, 1, 2, 0, 3, 4};
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(m);
+    expectNear(n[0], glm::vec3(1, 0, 4) / std::sqrt(17.0f), 1e-6f);
+    expectNear(n[1], glm::vec3(0, 0, 1), 0.0f);
+    expectNear(n[3], glm::vec3(1, 0, 0), 0.0f);
+}
+
+TEST(Normals, DegenerateInputGivesFiniteOrZeroNormals) {
+    Mesh m;
+    m.positions = {
+        {0, 0, 0}, {1, 0, 0}, {0, 1, 0},  // 0–2: a proper triangle, normal +z
+        {2, 2, 2}, {3, 3, 3}, {4, 4, 4},  // 3–5: collinear, a zero-area face
+        {9, 9, 9},                        // 6: used by no face
+        {5, 5, 5},                        // 7: only in a point triangle
+    };
+    m.indices = {0, 1, 2, 3, 4, 5,
+                 7, 7, 7, 1, 1, 2,  // zero area at vertices 1 and 2: must change nothing
+                 0, 1, 3};  // (1,0,0) × (2,2,2) = (0,−2,2), which gives vertex 3 a normal
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(m);
+    ASSERT_EQ(n.size(), m.positions.size());
+    for (const glm::vec3& v : n) EXPECT_TRUE(finite(v));
+    // Vertices 0 and 1 get +z plus (0,−2,2): (0,0,1) + (0,−2,2) = (0,−2,3) → /√13.
+    expectNear(n[0], glm::vec3(0, -2, 3) / std::sqrt(13.0f), 1e-6f);
+    expectNear(n[2], glm::vec3(0, 0, 1), 0.0f);
+    expectNear(n[3], glm::vec3(0, -1, 1) / std::sqrt(2.0f), 1e-6f);
+    expectNear(n[4], glm::vec3(0.0f), 0.0f);
+    expectNear(n[5], glm::vec3(0.0f), 0.0f);
+    expectNear(n[6], glm::vec3(0.0f), 0.0f);
+    expectNear(n[7], glm::vec3(0.0f), 0.0f);
+}
+
+TEST(Normals, CancellingFacesGiveZero) {
+    // A two-sided sheet: the same triangle in both windings sums to exactly zero at every corner.
+    Mesh m;
+    m.positions = {{0.1f, 0.2f, 0.3f}, {1.7f, -0.4f, 0.9f}, {-0.6f, 1.3f, 2.2f}};
+    m.indices = {0, 1, 2, 0, 2, 1};
+    for (const glm::vec3& v : facet::computeVertexNormals(m)) {
+        EXPECT_TRUE(finite(v));
+        expectNear(v, glm::vec3(0.0f), 0.0f);
+    }
+}
+
+TEST(Normals, EmptyMesh) {
+    EXPECT_TRUE(facet::computeVertexNormals(Mesh{}).empty());
+    EXPECT_EQ(facet::normalDisplayLength(Mesh{}), 0.0f);
+}
+
+TEST(Normals, UnitSphereNormalsAreThePositions) {
+    // The error shrinks only linearly with the cell size (each quad's diagonal split tilts the
+    // area weighting): about 0.5 × the ring spacing next to the poles, so 64 rings for 1e-2.
+    const int rings = 64, sectors = 128;
+    Mesh m = facet::makeUvSphere(rings, sectors);
+    // Normals follow the winding (see Normals.ReversedWindingNegatesNormals). This test is about
+    // the normals, not the generator, so orient the sphere outward (positive signed volume)
+    // first: makeUvSphere has wound it clockwise seen from outside, against mesh.hpp's contract.
+    if (signedVolume(m) < 0.0) reverseWinding(m);
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(m);
+    ASSERT_EQ(n.size(), m.positions.size());
+    float worst = 0.0f;
+    // Pole rows are excluded (each pole copy has one thin triangle), and so are the seam columns
+    // s = 0 and s = sectors: they duplicate positions and see the faces of one side only, as
+    // normals follow vertex indices.
+    for (int r = 1; r < rings; ++r)
+        for (int s = 1; s < sectors; ++s) {
+            const std::size_t i = static_cast<std::size_t>(r * (sectors + 1) + s);
+            EXPECT_NEAR(glm::length(n[i]), 1.0f, 1e-6f);
+            worst = std::max(worst, glm::length(n[i] - m.positions[i]));
+        }
+    EXPECT_LT(worst, 1e-2f);
+}
+
+TEST(Normals, ReversedWindingNegatesNormals) {
+    Mesh m = courseCube();
+    reverseWinding(m);
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(m);
+    for (std::size_t i = 0; i < 8; ++i) {
+        SCOPED_TRACE(i);
+        expectNear(n[i], -kCubeNormals[i], 1e-6f);
+    }
+}
+
+TEST(Normals, DisplayLengthIsDiagonalOverHundred) {
+    EXPECT_NEAR(facet::normalDisplayLength(courseCube()), std::sqrt(3.0f) / 100.0f, 1e-7f);
+    Mesh m;
+    m.positions = {{-1, 2, 0}, {2, 6, 12}};  // box 3 × 4 × 12: diagonal 13
+    EXPECT_NEAR(facet::normalDisplayLength(m), 0.13f, 1e-7f);
+}
+
+}  // namespace
