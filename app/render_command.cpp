@@ -22,6 +22,7 @@ struct RenderOptions {
     std::string mode = "solid";
     std::string shader = "painter";
     std::string interp = "perspective";
+    std::string lighting = "off";
     std::string size;
     std::string background = "5C5C5C";
     bool cull = false;
@@ -63,6 +64,7 @@ int runRender(const RenderOptions& o) {
     settings.mode = *parseDrawMode(o.mode);
     settings.shader = *parseShader(o.shader);
     settings.interp = *parseInterp(o.interp);
+    settings.lighting = *parseLighting(o.lighting);
     settings.cullBackFaces = o.cull;
     settings.nearPlane = o.nearPlane;
     settings.pointSize = o.pointSize;
@@ -96,8 +98,9 @@ int runRender(const RenderOptions& o) {
         std::fprintf(stderr, "facet render: %s\n", st->what().c_str());
         return kFailed;
     }
-    std::printf("wrote %s (%dx%d, %s, %s, %s%s)\n", o.output.c_str(), frame.width, frame.height,
-                o.mode.c_str(), o.shader.c_str(), o.interp.c_str(), o.cull ? ", culled" : "");
+    std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s%s)\n", o.output.c_str(), frame.width,
+                frame.height, o.mode.c_str(), o.shader.c_str(), o.interp.c_str(),
+                o.lighting.c_str(), o.cull ? ", culled" : "");
     if (o.frames > 1) {
         std::vector<double> sorted = ms;
         std::sort(sorted.begin(), sorted.end());
@@ -137,6 +140,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     cmd->add_option("--interp", opts->interp, "Attribute interpolation")
         ->check(CLI::IsMember({"affine", "perspective"}))
+        ->capture_default_str();
+    cmd->add_option("--lighting", opts->lighting, "Lighting: off, or gouraud (per vertex)")
+        ->check(CLI::IsMember({"off", "gouraud"}))
         ->capture_default_str();
     cmd->add_flag("--cull", opts->cull, "Drop back-facing triangles");
     cmd->add_option("--size", opts->size, "Image size WxH (focal length scales with the width)");

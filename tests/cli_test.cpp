@@ -68,7 +68,8 @@ TEST_F(Cli, RendersTheDefaultAssetSceneToAPngOfTheSceneSize) {
 TEST_F(Cli, SizeOptionResizesAndFramesTimesArePrinted) {
     const Outcome r =
         run(std::string("render ") + FACET_ASSETS_DIR + "/default.scene -o " + out("s.png") +
-            " --size 320x200 --mode wireframe --shader depth --interp affine --cull --frames 3");
+            " --size 320x200 --mode wireframe --shader depth --interp affine --cull --frames 3 "
+            "--lighting gouraud");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_EQ(pngSize(out("s.png")), std::make_pair(320, 200));
     EXPECT_NE(r.out.find("median"), std::string::npos) << r.out;
@@ -122,7 +123,8 @@ TEST_F(Cli, UnwritableOutputIsAFailureNotACrash) {
 TEST_F(Cli, HelpListsTheOptions) {
     const Outcome r = run("render --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* opt : {"--mode", "--shader", "--interp", "--cull", "--size", "--background"})
+    for (const char* opt :
+         {"--mode", "--shader", "--interp", "--lighting", "--cull", "--size", "--background"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 

@@ -45,6 +45,7 @@ struct Case {
     Interp interp;
     bool cull;
     double dolly = 1.0;  ///< eye moved to look + dolly·(eye - look): < 1 moves in, clips
+    facet::Lighting lighting = facet::Lighting::Off;
 };
 
 std::string caseName(const Case& c) {
@@ -56,6 +57,10 @@ std::string caseName(const Case& c) {
         name += part;
     }
     if (c.cull) name += "_cull";
+    if (c.lighting != facet::Lighting::Off) {
+        name += '_';
+        name += facet::toString(c.lighting);
+    }
     if (c.dolly != 1.0) name += "_dolly" + std::to_string(static_cast<int>(c.dolly * 1000));
     return name;
 }
@@ -79,6 +84,12 @@ std::vector<Case> allCases() {
             }
         }
     }
+    // Gouraud lighting: lit vertex colours through every mode.
+    for (const std::string& scene : scenes)
+        for (const DrawMode mode : {DrawMode::Vertices, DrawMode::Wireframe, DrawMode::Solid})
+            for (const Interp interp : {Interp::Affine, Interp::Perspective})
+                cases.push_back({scene, mode, ShaderKind::Painter, interp, false, 1.0,
+                                 facet::Lighting::Gouraud});
     // Close-ups with the eye near or inside the mesh: geometry crosses the near plane and runs
     // far beyond the image (near clipping, guard band, very long lines).
     for (const char* scene : {"course/example2", "scenes/bunny_1280x720", "scenes/spot_1280x720"}) {
@@ -142,6 +153,7 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     settings.shader = c.shader;
     settings.interp = c.interp;
     settings.cullBackFaces = c.cull;
+    settings.lighting = c.lighting;
 
     const facet::reference::Image ref = facet::reference::render(*scene, settings);
     facet::Renderer renderer;

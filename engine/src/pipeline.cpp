@@ -10,6 +10,8 @@
 #include "clip.hpp"
 #include "facet/camera.hpp"
 #include "facet/colormap.hpp"
+#include "facet/lighting.hpp"
+#include "facet/normals.hpp"
 #include "facet/render.hpp"
 #include "line_raster.hpp"
 #include "triangle_raster.hpp"
@@ -391,7 +393,21 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     clip_.resize(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i)
         clip_[i] = clipFromWorldF * glm::vec4(positions[i], 1.0f);
-    DrawInput input{clip_, scene.mesh.colors, scene.mesh.indices,
+    std::span<const glm::vec3> colors = scene.mesh.colors;
+    if (settings.lighting == Lighting::Gouraud) {
+        // Gouraud: the formula once per vertex in world space; the rasterizer then
+        // interpolates the lit colour like any other vertex colour.
+        const std::vector<glm::vec3> normals = computeVertexNormals(scene.mesh);
+        const FastLighting lighting = prepareLighting(lightingParams(scene));
+        const glm::vec3 eye(cam.eye);
+        litColors_.resize(positions.size());
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            const glm::vec3 rgb = scene.mesh.hasColors() ? scene.mesh.colors[i] : glm::vec3(1.0f);
+            litColors_[i] = shade(rgb, lightIntensity(positions[i], normals[i], eye, lighting));
+        }
+        colors = litColors_;
+    }
+    DrawInput input{clip_, colors, scene.mesh.indices,
                     static_cast<float>(resolveNearPlane(settings, scene.mesh))};
     return draw(input, settings, frame);
 }

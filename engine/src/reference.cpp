@@ -30,6 +30,9 @@
 
 #include "facet/reference.hpp"
 
+#include "facet/lighting.hpp"
+#include "facet/normals.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -398,6 +401,18 @@ std::vector<glm::dvec4> projectScene(const Scene& scene) {
 Image render(const Scene& scene, const RenderSettings& settings) {
     const std::vector<glm::dvec4> clip = projectScene(scene);
     std::vector<glm::dvec3> colors(scene.mesh.colors.begin(), scene.mesh.colors.end());
+    if (settings.lighting == Lighting::Gouraud) {
+        // Conventions §6, per vertex: colour = clamp(rgb · I), I from the formula in double.
+        const std::vector<glm::vec3> normals = computeVertexNormals(scene.mesh);
+        const LightingParams params = lightingParams(scene);
+        colors.resize(scene.mesh.positions.size(), glm::dvec3(1.0));
+        for (std::size_t i = 0; i < colors.size(); ++i) {
+            const double intensity =
+                lightIntensity(glm::dvec3(scene.mesh.positions[i]), glm::dvec3(normals[i]),
+                               scene.camera.eye, params);
+            colors[i] = facet::shade(colors[i], intensity);
+        }
+    }
     Input input;
     input.clip = clip;
     input.colors = colors;

@@ -22,6 +22,11 @@ constexpr std::array<std::pair<std::string_view, Interp>, 2> kInterps{{
     {"perspective", Interp::Perspective},
 }};
 
+constexpr std::array<std::pair<std::string_view, Lighting>, 2> kLightings{{
+    {"off", Lighting::Off},
+    {"gouraud", Lighting::Gouraud},
+}};
+
 template <class E, std::size_t N>
 std::optional<E> lookup(const std::array<std::pair<std::string_view, E>, N>& table,
                         std::string_view name) {
@@ -48,6 +53,9 @@ std::optional<ShaderKind> parseShader(std::string_view name) {
 std::optional<Interp> parseInterp(std::string_view name) {
     return lookup(kInterps, name);
 }
+std::optional<Lighting> parseLighting(std::string_view name) {
+    return lookup(kLightings, name);
+}
 
 std::string_view toString(DrawMode mode) {
     return nameOf(kModes, mode);
@@ -57,6 +65,9 @@ std::string_view toString(ShaderKind shader) {
 }
 std::string_view toString(Interp interp) {
     return nameOf(kInterps, interp);
+}
+std::string_view toString(Lighting lighting) {
+    return nameOf(kLightings, lighting);
 }
 
 }  // namespace facet

@@ -58,6 +58,7 @@ class Renderer {
 
   private:
     std::vector<glm::vec4> clip_;
+    std::vector<glm::vec3> litColors_;
     std::vector<std::uint32_t> edges_;
 };
 
