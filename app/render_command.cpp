@@ -53,6 +53,11 @@ bool parseHexColor(std::string text, std::uint32_t& rgb) {
     return r.ec == std::errc{} && r.ptr == text.data() + 6;
 }
 
+/// The engine's names for a setting, as CLI11 wants them; one list serves parsing and --help.
+std::vector<std::string> choices(const std::vector<std::string_view>& names) {
+    return {names.begin(), names.end()};
+}
+
 int bad(const std::string& message) {
     std::fprintf(stderr, "facet render: %s\n", message.c_str());
     return kBadInput;
@@ -60,7 +65,7 @@ int bad(const std::string& message) {
 
 int runRender(const RenderOptions& o) {
     RenderSettings settings;
-    // CLI11 has already checked the names against the sets below.
+    // CLI11 has already checked the names against the engine's lists (choices below).
     settings.mode = *parseDrawMode(o.mode);
     settings.shader = *parseShader(o.shader);
     settings.interp = *parseInterp(o.interp);
@@ -133,16 +138,16 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("scene", opts->scene, "The .scene file")->required();
     cmd->add_option("-o,--output", opts->output, "Output PNG path")->required();
     cmd->add_option("--mode", opts->mode, "Draw mode")
-        ->check(CLI::IsMember({"vertices", "wireframe", "solid"}))
+        ->check(CLI::IsMember(choices(drawModeNames())))
         ->capture_default_str();
     cmd->add_option("--shader", opts->shader, "Shader")
-        ->check(CLI::IsMember({"simple", "painter", "depth"}))
+        ->check(CLI::IsMember(choices(shaderNames())))
         ->capture_default_str();
     cmd->add_option("--interp", opts->interp, "Attribute interpolation")
-        ->check(CLI::IsMember({"affine", "perspective"}))
+        ->check(CLI::IsMember(choices(interpNames())))
         ->capture_default_str();
     cmd->add_option("--lighting", opts->lighting, "Lighting: off, or gouraud (per vertex)")
-        ->check(CLI::IsMember({"off", "gouraud"}))
+        ->check(CLI::IsMember(choices(lightingNames())))
         ->capture_default_str();
     cmd->add_flag("--cull", opts->cull, "Drop back-facing triangles");
     cmd->add_option("--size", opts->size, "Image size WxH (focal length scales with the width)");

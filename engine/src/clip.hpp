@@ -32,6 +32,19 @@ using NearPolygon = SmallPolygon<ClipVertex, 4>;
 /// A triangle clipped by four guard-band lines has at most seven vertices.
 using ScreenPolygon = SmallPolygon<glm::dvec2, 8>;
 
+/// Where the edge a-b crosses w = near, given the signed distances da = a.w − near and
+/// db = b.w − near of opposite signs. Computed from the inside end whatever the edge's direction,
+/// so both triangles sharing the edge (and its wireframe line) get the same vertex.
+inline ClipVertex crossNear(const ClipVertex& a, const ClipVertex& b, float da, float db) {
+    const bool aInside = da >= 0.0f;
+    const ClipVertex& in = aInside ? a : b;
+    const ClipVertex& out = aInside ? b : a;
+    const float din = aInside ? da : db;
+    const float dout = aInside ? db : da;
+    const float t = din / (din - dout);
+    return {in.pos + t * (out.pos - in.pos), in.color + t * (out.color - in.color)};
+}
+
 /// Sutherland–Hodgman of a triangle against w >= near; keeps the input winding.
 inline NearPolygon clipNear(const ClipVertex (&tri)[3], float near) {
     NearPolygon out;
@@ -41,17 +54,18 @@ inline NearPolygon clipNear(const ClipVertex (&tri)[3], float near) {
         const float da = a.pos.w - near;
         const float db = b.pos.w - near;
         if (da >= 0.0f) out.push(a);
-        if ((da >= 0.0f) != (db >= 0.0f)) {
-            const ClipVertex& in = da >= 0.0f ? a : b;
-            const ClipVertex& outside = da >= 0.0f ? b : a;
-            const float din = da >= 0.0f ? da : db;
-            const float dout = da >= 0.0f ? db : da;
-            const float t = din / (din - dout);
-            out.push(
-                {in.pos + t * (outside.pos - in.pos), in.color + t * (outside.color - in.color)});
-        }
+        if ((da >= 0.0f) != (db >= 0.0f)) out.push(crossNear(a, b, da, db));
     }
     return out;
+}
+
+/// Clips the segment a-b against w >= near in place; false when nothing is left.
+inline bool clipSegmentNear(ClipVertex& a, ClipVertex& b, float near) {
+    const float da = a.pos.w - near;
+    const float db = b.pos.w - near;
+    if (!(da >= 0.0f) && !(db >= 0.0f)) return false;  // also drops NaN ends
+    if (!(da >= 0.0f) || !(db >= 0.0f)) (da >= 0.0f ? b : a) = crossNear(a, b, da, db);
+    return true;
 }
 
 /// Clips a screen-space triangle to the rectangle [lo, hi] (the guard band), keeping winding.

@@ -44,6 +44,16 @@ inline std::uint32_t packColor(const glm::vec3& c) {
     return packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
 }
 
+/// A vertex's clip position and colour (white when the draw has no colours).
+inline ClipVertex fetchVertex(const DrawInput& in, std::size_t i) {
+    return {in.clip[i], in.colors.empty() ? glm::vec3(1.0f) : in.colors[i]};
+}
+
+/// Twice the signed area of a screen triangle; positive means back-facing (y-down pixels).
+inline double signedArea2(const glm::dvec2 (&s)[3]) {
+    return (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
+}
+
 /// Linear functions of the pixel position for one triangle, relative to a base pixel so that
 /// float keeps its precision far from the origin: value = v[0] + v[1]·dx + v[2]·dy.
 struct Planes {
@@ -61,8 +71,7 @@ struct Planes {
 /// inherit the snapping error; returns false for a degenerate triangle.
 bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int baseX, int baseY,
                 Planes& p) {
-    const double area =
-        (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
+    const double area = signedArea2(s);
     if (!(area != 0.0) || !std::isfinite(area)) return false;
     const double bx = baseX + 0.5, by = baseY + 0.5;
     const double l1 =
@@ -159,8 +168,7 @@ void drawTriangles(const DrawInput& in, bool cull, int width, int height, Sink& 
         ClipVertex v[3];
         bool finite = true, allFront = true, anyFront = false;
         for (int k = 0; k < 3; ++k) {
-            v[k].pos = in.clip[idx[k]];
-            v[k].color = in.colors.empty() ? glm::vec3(1.0f) : in.colors[idx[k]];
+            v[k] = fetchVertex(in, idx[k]);
             const glm::vec4& p = v[k].pos;
             finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.w);
             allFront = allFront && p.w >= in.nearPlane;
@@ -213,9 +221,7 @@ void drawTriangles(const DrawInput& in, bool cull, int width, int height, Sink& 
             // Beyond the guard band: clip the screen triangle to it for coverage only; the
             // planes above still describe the whole triangle, so interpolation is unchanged.
             clipped = true;
-            const double area =
-                (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
-            if (cull && area > 0.0) {
+            if (cull && signedArea2(s) > 0.0) {
                 culled = true;
                 continue;
             }
@@ -243,19 +249,9 @@ void drawLines(const DrawInput& in, std::span<const std::uint32_t> edges, Frameb
                RenderStats& stats) {
     for (std::size_t e = 0; e + 1 < edges.size(); e += 2) {
         if (edges[e] >= in.clip.size() || edges[e + 1] >= in.clip.size()) continue;
-        ClipVertex a{in.clip[edges[e]], in.colors.empty() ? glm::vec3(1.0f) : in.colors[edges[e]]};
-        ClipVertex b{in.clip[edges[e + 1]],
-                     in.colors.empty() ? glm::vec3(1.0f) : in.colors[edges[e + 1]]};
-        const float da = a.pos.w - in.nearPlane, db = b.pos.w - in.nearPlane;
-        if (!(da >= 0.0f) && !(db >= 0.0f)) continue;
-        if (!(da >= 0.0f) || !(db >= 0.0f)) {  // replace the outside end, computing from inside
-            ClipVertex& outside = da >= 0.0f ? b : a;
-            const ClipVertex& inside = da >= 0.0f ? a : b;
-            const float din = da >= 0.0f ? da : db, dout = da >= 0.0f ? db : da;
-            const float t = din / (din - dout);
-            outside = {inside.pos + t * (outside.pos - inside.pos),
-                       inside.color + t * (outside.color - inside.color)};
-        }
+        ClipVertex a = fetchVertex(in, edges[e]);
+        ClipVertex b = fetchVertex(in, edges[e + 1]);
+        if (!clipSegmentNear(a, b, in.nearPlane)) continue;
         const double ax = static_cast<double>(a.pos.x) / a.pos.w,
                      ay = static_cast<double>(a.pos.y) / a.pos.w;
         const double bx = static_cast<double>(b.pos.x) / b.pos.w,
@@ -294,7 +290,7 @@ void drawPoints(const DrawInput& in, int pointSize, Framebuffer& fb, RenderStats
                      y = std::floor(static_cast<double>(p.y) / p.w);
         if (x + hi < 0 || y + hi < 0 || x + lo >= fb.width || y + lo >= fb.height) continue;
         ++stats.pointsDrawn;
-        const glm::vec3 color = in.colors.empty() ? glm::vec3(1.0f) : in.colors[i];
+        const glm::vec3 color = fetchVertex(in, i).color;
         const int px = static_cast<int>(x), py = static_cast<int>(y);
         for (int yy = std::max(0, py + lo); yy <= std::min(fb.height - 1, py + hi); ++yy)
             for (int xx = std::max(0, px + lo); xx <= std::min(fb.width - 1, px + hi); ++xx) {

@@ -42,7 +42,27 @@ std::string_view nameOf(const std::array<std::pair<std::string_view, E>, N>& tab
     return "?";
 }
 
+template <class E, std::size_t N>
+std::vector<std::string_view> namesOf(const std::array<std::pair<std::string_view, E>, N>& table) {
+    std::vector<std::string_view> names;
+    for (const auto& entry : table) names.push_back(entry.first);
+    return names;
+}
+
 }  // namespace
+
+std::vector<std::string_view> drawModeNames() {
+    return namesOf(kModes);
+}
+std::vector<std::string_view> shaderNames() {
+    return namesOf(kShaders);
+}
+std::vector<std::string_view> interpNames() {
+    return namesOf(kInterps);
+}
+std::vector<std::string_view> lightingNames() {
+    return namesOf(kLightings);
+}
 
 std::optional<DrawMode> parseDrawMode(std::string_view name) {
     return lookup(kModes, name);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace facet {
 
@@ -38,6 +39,12 @@ std::optional<DrawMode> parseDrawMode(std::string_view name);
 std::optional<ShaderKind> parseShader(std::string_view name);
 std::optional<Interp> parseInterp(std::string_view name);
 std::optional<Lighting> parseLighting(std::string_view name);
+
+/// Every accepted name of each setting, in display order (CLI choices, UI combo boxes).
+std::vector<std::string_view> drawModeNames();
+std::vector<std::string_view> shaderNames();
+std::vector<std::string_view> interpNames();
+std::vector<std::string_view> lightingNames();
 
 /// Lower-case names for messages and UI.
 std::string_view toString(DrawMode mode);
