@@ -16,6 +16,7 @@
 #include "facet/mesh.hpp"
 #include "facet/mesh_io.hpp"
 #include "facet/scene_io.hpp"
+#include "facet/texture.hpp"
 
 namespace {
 
@@ -691,13 +692,43 @@ TEST(SceneLoader, TextureLine) {
     auto r = facet::loadScene(data("scene_texture.scene"));
     expectLoaded(r);
     EXPECT_EQ(r->texturePath, data("texture_checker.png"));
+    ASSERT_NE(r->texture, nullptr);  // loaded with the scene, mip chain and all
+    EXPECT_GT(r->texture->levelCount(), 1);
 }
 
-TEST(SceneLoader, ObjMaterialTextureStaysOnTheMesh) {
+TEST(SceneLoader, ObjMaterialTextureBecomesTheScenesTexture) {
     auto r = facet::loadScene(data("scene_obj_texture.scene"));
     expectLoaded(r);
-    EXPECT_TRUE(r->texturePath.empty());
     EXPECT_EQ(r->mesh.texturePath, data("texture_checker.png"));
+    EXPECT_EQ(r->texturePath, data("texture_checker.png"));
+    ASSERT_NE(r->texture, nullptr);
+}
+
+TEST(SceneLoader, SceneWithoutTextureHasNone) {
+    auto r = facet::loadScene(data("scene_valid.scene"));
+    expectLoaded(r);
+    EXPECT_EQ(r->texture, nullptr);
+    EXPECT_TRUE(r->texturePath.empty());
+}
+
+TEST(SceneLoader, ReplacingTheTextureKeepsTheOldOneOnFailure) {
+    auto r = facet::loadScene(data("scene_texture.scene"));
+    expectLoaded(r);
+    const auto before = r->texture;
+    const facet::Status bad = facet::loadSceneTexture(*r, data("tex_not_an_image.png"));
+    ASSERT_TRUE(bad.has_value());
+    EXPECT_NE(bad->what().find("tex_not_an_image.png"), std::string::npos) << bad->what();
+    EXPECT_EQ(r->texture, before);
+    EXPECT_EQ(r->texturePath, data("texture_checker.png"));
+    const facet::Status missing = facet::loadSceneTexture(*r, data("no_such_file.png"));
+    ASSERT_TRUE(missing.has_value());
+    EXPECT_EQ(r->texture, before);
+
+    const facet::Status good = facet::loadSceneTexture(*r, data("tex_4x4.png"));
+    EXPECT_FALSE(good.has_value()) << good->what();
+    ASSERT_NE(r->texture, nullptr);
+    EXPECT_EQ(r->texture->width(), 4);
+    EXPECT_EQ(r->texturePath, data("tex_4x4.png"));
 }
 
 TEST(SceneLoader, CourseScenes) {
@@ -832,6 +863,17 @@ TEST(SceneErrors, MissingMesh) {
 TEST(SceneErrors, MissingTexture) {
     EXPECT_TRUE(failsAt(facet::loadScene(data("scene_missing_texture.scene")),
                         "scene_missing_texture.scene", 20, {"'no_such_texture.png'", "not found"}));
+}
+
+TEST(SceneErrors, CorruptTextureNamesTheSceneLineAndTheImage) {
+    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_corrupt_texture.scene")),
+                        "scene_corrupt_texture.scene", 20,
+                        {"cannot load texture", "tex_not_an_image.png"}));
+}
+
+TEST(SceneErrors, MissingMapKdTextureNamesTheObj) {
+    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_obj_missing_texture.scene")),
+                        "obj_missing_texture.obj", 0, {"map_Kd", "not_here.png"}));
 }
 
 TEST(SceneErrors, MeshErrorKeepsTheMeshFileAndLine) {

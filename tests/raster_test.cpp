@@ -32,7 +32,7 @@ std::vector<std::uint16_t> countScreen(const std::vector<glm::vec2>& pts, int w,
     RenderSettings s;
     s.cullBackFaces = cull;
     std::vector<std::uint16_t> counts;
-    r.countCoverage({clip, {}, idx, 0.5f}, s, w, h, counts);
+    r.countCoverage({.clip = clip, .indices = idx, .nearPlane = 0.5f}, s, w, h, counts);
     return counts;
 }
 
@@ -127,7 +127,8 @@ TEST_P(QuadGrid, AdditiveHalfGreyNeverExceedsHalfAndLeavesNoHole) {
                                          99u + static_cast<std::uint32_t>(seed), {64.0f, 48.0f});
         Renderer r;
         std::vector<std::uint16_t> counts;
-        r.countCoverage({t.clip, {}, t.indices, 0.05f}, RenderSettings{}, 128, 96, counts);
+        r.countCoverage({.clip = t.clip, .indices = t.indices, .nearPlane = 0.05f},
+                        RenderSettings{}, 128, 96, counts);
         int holes = 0, doubles = 0;
         for (auto v : counts) {
             holes += v == 0;
@@ -172,8 +173,8 @@ TEST(FillRule, JitteredPlaneInPerspectiveCoversItsOutlineExactlyOnce) {
         for (const auto& p : grid.positions) clip.push_back(m * glm::vec4(p, 1.0f));
         Renderer r;
         std::vector<std::uint16_t> counts;
-        r.countCoverage({clip, {}, grid.indices, 0.01f}, RenderSettings{}, cam.width, cam.height,
-                        counts);
+        r.countCoverage({.clip = clip, .indices = grid.indices, .nearPlane = 0.01f},
+                        RenderSettings{}, cam.width, cam.height, counts);
 
         // The outline is the projected unit square; classify each centre against it in double.
         glm::dvec2 q[4];
@@ -215,7 +216,7 @@ void expectClosedSurfaceBalanced(const Mesh& mesh, const Camera& cam, const std:
     Renderer r;
     std::vector<std::uint16_t> all, front;
     RenderSettings s;
-    const DrawInput in{clip, {}, mesh.indices, 0.001f};
+    const DrawInput in{.clip = clip, .indices = mesh.indices, .nearPlane = 0.001f};
     r.countCoverage(in, s, cam.width, cam.height, all);
     s.cullBackFaces = true;
     r.countCoverage(in, s, cam.width, cam.height, front);

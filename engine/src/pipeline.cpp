@@ -332,6 +332,7 @@ void dispatchVariant(ShaderKind shader, Interp interp, Fn&& fn) {
             withInterp(std::integral_constant<ShaderKind, ShaderKind::Simple>{});
             break;
         case ShaderKind::Painter:
+        case ShaderKind::Texture:
             withInterp(std::integral_constant<ShaderKind, ShaderKind::Painter>{});
             break;
         case ShaderKind::Depth:
@@ -403,8 +404,10 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
         }
         colors = litColors_;
     }
-    DrawInput input{clip_, colors, scene.mesh.indices,
-                    static_cast<float>(resolveNearPlane(settings, scene.mesh))};
+    DrawInput input{.clip = clip_,
+                    .colors = colors,
+                    .indices = scene.mesh.indices,
+                    .nearPlane = static_cast<float>(resolveNearPlane(settings, scene.mesh))};
     return draw(input, settings, frame);
 }
 

@@ -15,6 +15,7 @@
 
 #include "facet/mesh_io.hpp"
 #include "facet/scene_io.hpp"
+#include "facet/texture.hpp"
 #include "text_scan.hpp"
 
 namespace facet {
@@ -288,7 +289,34 @@ Result<Scene> loadScene(const std::string& path) {
     if (!mesh) return mesh.error();  // keeps the mesh file's own name and line
     scene.meshPath = meshFile;
     scene.mesh = std::move(*mesh);
+
+    // The scene's own texture wins over the OBJ's map_Kd (conventions §3).
+    if (!scene.texturePath.empty()) {
+        auto texture = loadTexture(scene.texturePath);
+        if (!texture) {
+            return Error{{path, parsed->textureLine},
+                         "cannot load texture: " + texture.error().what()};
+        }
+        scene.texture = std::make_shared<const Texture>(std::move(*texture));
+    } else if (!scene.mesh.texturePath.empty()) {
+        auto texture = loadTexture(scene.mesh.texturePath);
+        if (!texture) {
+            return Error{
+                {meshFile, 0},
+                "cannot load the map_Kd texture of its material: " + texture.error().what()};
+        }
+        scene.texturePath = scene.mesh.texturePath;
+        scene.texture = std::make_shared<const Texture>(std::move(*texture));
+    }
     return std::move(parsed->scene);
+}
+
+Status loadSceneTexture(Scene& scene, const std::string& path) {
+    auto texture = loadTexture(path);
+    if (!texture) return texture.error();
+    scene.texture = std::make_shared<const Texture>(std::move(*texture));
+    scene.texturePath = path;
+    return std::nullopt;
 }
 
 }  // namespace facet

@@ -1,6 +1,8 @@
 #include "facet/settings.hpp"
 
 #include <array>
+#include <charconv>
+#include <system_error>
 #include <utility>
 
 namespace facet {
@@ -12,19 +14,26 @@ constexpr std::array<std::pair<std::string_view, DrawMode>, 3> kModes{{
     {"wireframe", DrawMode::Wireframe},
     {"solid", DrawMode::Solid},
 }};
-constexpr std::array<std::pair<std::string_view, ShaderKind>, 3> kShaders{{
+constexpr std::array<std::pair<std::string_view, ShaderKind>, 4> kShaders{{
     {"simple", ShaderKind::Simple},
     {"painter", ShaderKind::Painter},
     {"depth", ShaderKind::Depth},
+    {"texture", ShaderKind::Texture},
 }};
-constexpr std::array<std::pair<std::string_view, Interp>, 2> kInterps{{
+constexpr std::array<std::pair<std::string_view, Interp>, 3> kInterps{{
     {"affine", Interp::Affine},
+    {"subdivided", Interp::Subdivided},
     {"perspective", Interp::Perspective},
 }};
-
-constexpr std::array<std::pair<std::string_view, Lighting>, 2> kLightings{{
+constexpr std::array<std::pair<std::string_view, Lighting>, 3> kLightings{{
     {"off", Lighting::Off},
     {"gouraud", Lighting::Gouraud},
+    {"phong", Lighting::Phong},
+}};
+constexpr std::array<std::pair<std::string_view, TextureFilter>, 3> kFilters{{
+    {"nearest", TextureFilter::Nearest},
+    {"bilinear", TextureFilter::Bilinear},
+    {"trilinear", TextureFilter::Trilinear},
 }};
 
 template <class E, std::size_t N>
@@ -63,6 +72,9 @@ std::vector<std::string_view> interpNames() {
 std::vector<std::string_view> lightingNames() {
     return namesOf(kLightings);
 }
+std::vector<std::string_view> filterNames() {
+    return namesOf(kFilters);
+}
 
 std::optional<DrawMode> parseDrawMode(std::string_view name) {
     return lookup(kModes, name);
@@ -76,6 +88,26 @@ std::optional<Interp> parseInterp(std::string_view name) {
 std::optional<Lighting> parseLighting(std::string_view name) {
     return lookup(kLightings, name);
 }
+std::optional<TextureFilter> parseFilter(std::string_view name) {
+    return lookup(kFilters, name);
+}
+
+std::optional<InterpSpec> parseInterpSpec(std::string_view text) {
+    const std::size_t colon = text.find(':');
+    const std::optional<Interp> interp = parseInterp(text.substr(0, colon));
+    if (!interp) return std::nullopt;
+    InterpSpec spec{*interp, 16};
+    if (colon == std::string_view::npos) return spec;
+    if (*interp != Interp::Subdivided) return std::nullopt;  // only subdivided takes an N
+    const std::string_view digits = text.substr(colon + 1);
+    int n = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+    if (ec != std::errc{} || end != digits.data() + digits.size() || n < kMinSubdivision ||
+        n > kMaxSubdivision)
+        return std::nullopt;
+    spec.subdivision = n;
+    return spec;
+}
 
 std::string_view toString(DrawMode mode) {
     return nameOf(kModes, mode);
@@ -88,6 +120,9 @@ std::string_view toString(Interp interp) {
 }
 std::string_view toString(Lighting lighting) {
     return nameOf(kLightings, lighting);
+}
+std::string_view toString(TextureFilter filter) {
+    return nameOf(kFilters, filter);
 }
 
 }  // namespace facet

@@ -7,21 +7,35 @@
 #include <span>
 #include <vector>
 
+#include <string_view>
+
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "facet/framebuffer.hpp"
+#include "facet/lighting.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
 namespace facet {
 
-/// Geometry already in clip space (see camera.hpp), as one draw consumes it.
+class Texture;
+
+/// Geometry already in clip space (see camera.hpp), as one draw consumes it. Only the streams
+/// the settings need are read: colours for every shader but Depth (and Texture without
+/// combine), uvs for Texture, normals and positions for Phong lighting.
 struct DrawInput {
     std::span<const glm::vec4> clip;         ///< one per vertex
-    std::span<const glm::vec3> colors;       ///< one per vertex, or empty for white
+    std::span<const glm::vec3> colors;       ///< one per vertex (lit for Gouraud), or empty: white
+    std::span<const glm::vec2> uvs;          ///< one per vertex, or empty: (0, 0)
+    std::span<const glm::vec3> normals;      ///< world-space unit (or zero) normals, Phong
+    std::span<const glm::vec3> positions;    ///< world-space positions, Phong
     std::span<const std::uint32_t> indices;  ///< three per triangle
     float nearPlane = 1e-3f;                 ///< clip.w below this is cut away
+    const Texture* texture = nullptr;        ///< Texture shader; null samples as white
+    FastLighting lighting;                   ///< Phong: the folded §6 parameters
+    glm::vec3 eye{0.0f};                     ///< Phong: camera centre in world space
 };
 
 /// What a draw did, for --stats, the viewer and tests.
@@ -32,9 +46,13 @@ struct RenderStats {
     std::size_t trianglesRasterized = 0;  ///< triangles that reached the rasterizer
     std::size_t linesDrawn = 0;           ///< segments drawn in wireframe mode
     std::size_t pointsDrawn = 0;          ///< vertex squares drawn
+    std::size_t normalsDrawn = 0;         ///< normal segments drawn (showNormals)
     std::size_t fragments = 0;            ///< pixels that passed coverage (before the depth test)
     float depthNear = 0.0f;               ///< smallest depth left in the frame (depth shader)
     float depthFar = 0.0f;                ///< largest depth left in the frame (depth shader)
+    std::size_t vertexBytes = 0;    ///< bytes per vertex the draw read or derived (clip included)
+    int varyings = 0;               ///< floats interpolated per fragment, depth (1/w) included
+    std::string_view varyingNames;  ///< what they are, e.g. "depth rgb uv" (static storage)
 };
 
 /// Near distance for a draw: the setting when positive, else 1e-3 of the mesh's bounding box
@@ -59,6 +77,8 @@ class Renderer {
   private:
     std::vector<glm::vec4> clip_;
     std::vector<glm::vec3> litColors_;
+    std::vector<glm::vec3> normals_;
+    std::vector<glm::vec4> normalClip_;  // the normals display: two clip points per vertex
     std::vector<std::uint32_t> edges_;
 };
 

@@ -2,6 +2,7 @@
 // The contents of a .scene file (conventions §1) plus the mesh it names. Plain data: the viewer
 // edits these fields directly between frames.
 
+#include <memory>
 #include <string>
 
 #include <glm/vec3.hpp>
@@ -10,6 +11,8 @@
 #include "facet/mesh.hpp"
 
 namespace facet {
+
+class Texture;
 
 /// Pinhole camera: pose by look-at, intrinsics by focal length in pixels and image size.
 struct Camera {
@@ -39,8 +42,11 @@ struct Material {
 struct Scene {
     std::string path;         ///< the .scene file itself
     std::string meshPath;     ///< resolved mesh path
-    std::string texturePath;  ///< resolved texture path from line 10, empty if none
+    std::string texturePath;  ///< resolved path of the loaded texture, empty if none
     Mesh mesh;
+    /// The scene's texture (line 10, else the OBJ's map_Kd), or null. Shared and immutable, so
+    /// copying a Scene is cheap and a UI can swap it without touching the renderer.
+    std::shared_ptr<const Texture> texture;
     Camera camera;
     double ambient = 1.0;  ///< Ia
     Light light;

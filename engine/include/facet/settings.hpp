@@ -12,15 +12,27 @@ namespace facet {
 enum class DrawMode { Vertices, Wireframe, Solid };
 
 /// The course's shaders: Simple (no depth test, last wins), Painter (LESS depth test),
-/// Depth (depth-tested, then depth mapped through viridis: near dark, far bright).
-enum class ShaderKind { Simple, Painter, Depth };
+/// Depth (depth-tested, then depth mapped through viridis: near dark, far bright), Texture
+/// (LESS depth test, the pixel is the texel, or texel × lit colour with `combine`).
+enum class ShaderKind { Simple, Painter, Depth, Texture };
 
 /// Attribute interpolation across a primitive. Depth is always perspective-correct.
-enum class Interp { Affine, Perspective };
+/// Subdivided is exact (perspective-correct) every `subdivision` pixels along a row and affine
+/// in between: the classic speed/accuracy compromise of 1990s software renderers.
+enum class Interp { Affine, Subdivided, Perspective };
 
-/// Lighting (conventions §6): none (vertex colours as they are) or Gouraud (the lighting
-/// formula evaluated per vertex, the lit colour interpolated).
-enum class Lighting { Off, Gouraud };
+/// Lighting (conventions §6): none (vertex colours as they are), Gouraud (the formula per
+/// vertex, the lit colour interpolated) or Phong (normal interpolated, renormalised, lit per
+/// pixel).
+enum class Lighting { Off, Gouraud, Phong };
+
+/// Texture filtering (conventions §7); Trilinear picks the mip level from the screen-space
+/// derivatives of (u, v).
+enum class TextureFilter { Nearest, Bilinear, Trilinear };
+
+/// Smallest and largest span of the Subdivided interpolation, in pixels.
+inline constexpr int kMinSubdivision = 2;
+inline constexpr int kMaxSubdivision = 256;
 
 /// Everything that selects a pipeline variant or changes a draw.
 struct RenderSettings {
@@ -28,6 +40,11 @@ struct RenderSettings {
     ShaderKind shader = ShaderKind::Painter;
     Interp interp = Interp::Perspective;
     Lighting lighting = Lighting::Off;
+    int subdivision = 16;  ///< pixels between exact evaluations for Interp::Subdivided (2…256)
+    TextureFilter filter = TextureFilter::Bilinear;
+    bool combine = false;                 ///< Texture shader: texel × (lit) vertex colour
+    bool showNormals = false;             ///< draw each vertex normal as a red segment
+    double normalLength = 0.0;            ///< world length of those segments; <= 0: diagonal/100
     bool cullBackFaces = false;           ///< drop triangles seen from behind
     std::uint32_t background = 0x5C5C5C;  ///< 0xRRGGBB, the course's grey
     int pointSize = 5;                    ///< side of the vertex squares, in pixels
@@ -39,17 +56,28 @@ std::optional<DrawMode> parseDrawMode(std::string_view name);
 std::optional<ShaderKind> parseShader(std::string_view name);
 std::optional<Interp> parseInterp(std::string_view name);
 std::optional<Lighting> parseLighting(std::string_view name);
+std::optional<TextureFilter> parseFilter(std::string_view name);
+
+/// An interpolation as the CLI spells it: "affine", "perspective", "subdivided" (N = 16) or
+/// "subdivided:N" with N in 2…256.
+struct InterpSpec {
+    Interp interp = Interp::Perspective;
+    int subdivision = 16;  ///< N, meaningful for Subdivided only
+};
+std::optional<InterpSpec> parseInterpSpec(std::string_view text);
 
 /// Every accepted name of each setting, in display order (CLI choices, UI combo boxes).
 std::vector<std::string_view> drawModeNames();
 std::vector<std::string_view> shaderNames();
 std::vector<std::string_view> interpNames();
 std::vector<std::string_view> lightingNames();
+std::vector<std::string_view> filterNames();
 
 /// Lower-case names for messages and UI.
 std::string_view toString(DrawMode mode);
 std::string_view toString(ShaderKind shader);
 std::string_view toString(Interp interp);
 std::string_view toString(Lighting lighting);
+std::string_view toString(TextureFilter filter);
 
 }  // namespace facet
