@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "facet/image_io.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
+#include "facet/texture.hpp"
 
 namespace facet::app {
 namespace {
@@ -23,9 +25,14 @@ struct RenderOptions {
     std::string shader = "painter";
     std::string interp = "perspective";
     std::string lighting = "off";
+    std::string filter = "bilinear";
+    std::string texture;
     std::string size;
     std::string background = "5C5C5C";
     bool cull = false;
+    bool combine = false;
+    bool normals = false;
+    double normalLength = 0.0;
     bool stats = false;
     double nearPlane = 0.0;
     int pointSize = 5;
@@ -68,8 +75,17 @@ int runRender(const RenderOptions& o) {
     // CLI11 has already checked the names against the engine's lists (choices below).
     settings.mode = *parseDrawMode(o.mode);
     settings.shader = *parseShader(o.shader);
-    settings.interp = *parseInterp(o.interp);
+    const std::optional<InterpSpec> interp = parseInterpSpec(o.interp);
+    if (!interp)
+        return bad("--interp wants affine, perspective, subdivided or subdivided:N (N in 2.." +
+                   std::to_string(kMaxSubdivision) + "), got '" + o.interp + "'");
+    settings.interp = interp->interp;
+    settings.subdivision = interp->subdivision;
     settings.lighting = *parseLighting(o.lighting);
+    settings.filter = *parseFilter(o.filter);
+    settings.combine = o.combine;
+    settings.showNormals = o.normals || o.normalLength > 0.0;
+    settings.normalLength = o.normalLength;
     settings.cullBackFaces = o.cull;
     settings.nearPlane = o.nearPlane;
     settings.pointSize = o.pointSize;
@@ -79,6 +95,17 @@ int runRender(const RenderOptions& o) {
     Result<Scene> loaded = loadScene(o.scene);
     if (!loaded) return bad(loaded.error().what());
     Scene& scene = loaded.value();
+    if (!o.texture.empty()) {
+        if (Status st = loadSceneTexture(scene, o.texture)) return bad(st->what());
+    }
+    if (settings.shader == ShaderKind::Texture && !scene.texture)
+        return bad(o.scene + ": the texture shader needs a texture: the scene names none (line 10 "
+                             "or an OBJ map_Kd); give one with --texture IMAGE");
+    if (settings.shader == ShaderKind::Texture && !scene.mesh.hasUvs())
+        std::fprintf(stderr,
+                     "facet render: warning: %s has no texture coordinates; every pixel samples "
+                     "uv = (0, 0)\n",
+                     scene.meshPath.c_str());
     if (!o.size.empty()) {
         int w = 0, h = 0;
         if (!parseSize(o.size, w, h))
@@ -103,9 +130,13 @@ int runRender(const RenderOptions& o) {
         std::fprintf(stderr, "facet render: %s\n", st->what().c_str());
         return kFailed;
     }
-    std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s%s)\n", o.output.c_str(), frame.width,
+    std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s%s%s)\n", o.output.c_str(), frame.width,
                 frame.height, o.mode.c_str(), o.shader.c_str(), o.interp.c_str(),
-                o.lighting.c_str(), o.cull ? ", culled" : "");
+                o.lighting.c_str(),
+                settings.shader == ShaderKind::Texture
+                    ? (std::string(", ") + o.filter + (o.combine ? ", combined" : "")).c_str()
+                    : "",
+                o.cull ? ", culled" : "");
     if (o.frames > 1) {
         std::vector<double> sorted = ms;
         std::sort(sorted.begin(), sorted.end());
@@ -121,10 +152,18 @@ int runRender(const RenderOptions& o) {
         std::printf("triangles: %zu in, %zu culled, %zu clipped, %zu rasterized\n",
                     stats.trianglesIn, stats.trianglesCulled, stats.trianglesClipped,
                     stats.trianglesRasterized);
-        std::printf("lines: %zu, points: %zu, fragments: %zu\n", stats.linesDrawn,
-                    stats.pointsDrawn, stats.fragments);
+        std::printf("lines: %zu, points: %zu, normals: %zu, fragments: %zu\n", stats.linesDrawn,
+                    stats.pointsDrawn, stats.normalsDrawn, stats.fragments);
+        std::printf("per vertex: %zu bytes; varyings: %d floats (%.*s)\n", stats.vertexBytes,
+                    stats.varyings, static_cast<int>(stats.varyingNames.size()),
+                    stats.varyingNames.data());
+        if (scene.texture)
+            std::printf("texture: %s, %dx%d, %d mip levels\n", scene.texturePath.c_str(),
+                        scene.texture->width(), scene.texture->height(),
+                        scene.texture->levelCount());
         if (settings.shader == ShaderKind::Depth)
-            std::printf("depth range: %.6g .. %.6g\n", stats.depthNear, stats.depthFar);
+            std::printf("depth range: %.6g .. %.6g (near dark, far bright)\n", stats.depthNear,
+                        stats.depthFar);
         std::printf("time: %.3f ms (last frame)\n", ms.back());
     }
     return kOk;
@@ -143,12 +182,26 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--shader", opts->shader, "Shader")
         ->check(CLI::IsMember(choices(shaderNames())))
         ->capture_default_str();
-    cmd->add_option("--interp", opts->interp, "Attribute interpolation")
-        ->check(CLI::IsMember(choices(interpNames())))
+    cmd->add_option("--interp", opts->interp,
+                    "Attribute interpolation: affine, perspective, subdivided[:N] (exact every N "
+                    "pixels, affine between; N = 16 by default)")
         ->capture_default_str();
-    cmd->add_option("--lighting", opts->lighting, "Lighting: off, or gouraud (per vertex)")
+    cmd->add_option("--lighting", opts->lighting,
+                    "Lighting: off, gouraud (per vertex) or phong (per pixel)")
         ->check(CLI::IsMember(choices(lightingNames())))
         ->capture_default_str();
+    cmd->add_option("--texture", opts->texture,
+                    "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's");
+    cmd->add_option("--filter", opts->filter, "Texture filter")
+        ->check(CLI::IsMember(choices(filterNames())))
+        ->capture_default_str();
+    cmd->add_flag("--combine", opts->combine,
+                  "Texture shader: multiply the texel by the (lit) vertex colour");
+    cmd->add_flag("--normals", opts->normals, "Draw vertex normals as red segments");
+    cmd->add_option("--normal-length", opts->normalLength,
+                    "Length of the normal segments in world units (implies --normals; default: "
+                    "bounding-box diagonal / 100)")
+        ->check(CLI::PositiveNumber);
     cmd->add_flag("--cull", opts->cull, "Drop back-facing triangles");
     cmd->add_option("--size", opts->size, "Image size WxH (focal length scales with the width)");
     cmd->add_option("--background", opts->background, "Background colour, hex RRGGBB")

@@ -8,16 +8,11 @@
 #include <cstddef>
 
 #include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-namespace facet::detail {
+#include "varyings.hpp"
 
-/// A vertex as the clipper sees it: clip-space position and the interpolated colour.
-struct ClipVertex {
-    glm::vec4 pos;
-    glm::vec3 color;
-};
+namespace facet::detail {
 
 /// A convex polygon with a fixed upper bound on its vertex count (no allocation).
 template <class V, std::size_t N>
@@ -42,7 +37,9 @@ inline ClipVertex crossNear(const ClipVertex& a, const ClipVertex& b, float da, 
     const float din = aInside ? da : db;
     const float dout = aInside ? db : da;
     const float t = din / (din - dout);
-    return {in.pos + t * (out.pos - in.pos), in.color + t * (out.color - in.color)};
+    ClipVertex v{in.pos + t * (out.pos - in.pos), {}};
+    for (std::size_t k = 0; k < v.a.size(); ++k) v.a[k] = in.a[k] + t * (out.a[k] - in.a[k]);
+    return v;
 }
 
 /// Sutherland–Hodgman of a triangle against w >= near; keeps the input winding.

@@ -1,20 +1,18 @@
-// The fast path's draw loop: vertex transform, clipping, coverage and shading. Shader and
-// interpolation are template parameters resolved once per draw (dispatchVariant), so the
-// per-pixel code has no branches on settings, no virtual calls and no allocation.
+// The fast path's draw: pick the pipeline variant once per draw (dispatch below), then run the
+// shared front end and the variant's pixel loops (primitives.hpp). The per-pixel code has no
+// branch on the settings, no virtual call and no allocation.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
 
-#include "clip.hpp"
 #include "facet/camera.hpp"
 #include "facet/colormap.hpp"
 #include "facet/lighting.hpp"
 #include "facet/normals.hpp"
 #include "facet/render.hpp"
-#include "line_raster.hpp"
-#include "triangle_raster.hpp"
+#include "primitives.hpp"
 
 namespace facet {
 
@@ -26,279 +24,28 @@ double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh) {
     return diagonal > 0.0 ? 1e-3 * diagonal : 1e-3;
 }
 
+namespace detail {
+
+void countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
+    const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
+    forEachCovered(setup, [&](int x, int y) {
+        std::uint16_t& n = c.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) +
+                                    static_cast<std::size_t>(x)];
+        if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+    });
+}
+
+std::string_view VaryingLayout::names() const {
+    // One literal per layout: the names live as long as the program.
+    static constexpr std::string_view kNames[8] = {
+        "1/w",         "1/w rgb",         "1/w uv",         "1/w rgb uv",
+        "1/w n p",     "1/w rgb n p",     "1/w uv n p",     "1/w rgb uv n p"};
+    return kNames[(color ? 1 : 0) + (uv ? 2 : 0) + (phong ? 4 : 0)];
+}
+
+}  // namespace detail
+
 namespace {
-
-/// Pixels beyond each image border inside which triangles are rasterized without 2D clipping.
-/// Keeps snapped coordinates below 2^24 grid units, so edge products stay far below 2^63.
-constexpr double kGuardBand = 32768.0;
-
-/// Screen coordinates beyond this are not drawn as lines (their integer maths would overflow).
-constexpr double kLineLimit = 1099511627776.0;  // 2^40
-
-/// Rounds a colour to 8 bits per channel as the conventions say; NaN becomes 0.
-inline std::uint32_t toByte(float c) {
-    const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
-    return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
-}
-inline std::uint32_t packColor(const glm::vec3& c) {
-    return packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
-}
-
-/// A vertex's clip position and colour (white when the draw has no colours).
-inline ClipVertex fetchVertex(const DrawInput& in, std::size_t i) {
-    return {in.clip[i], in.colors.empty() ? glm::vec3(1.0f) : in.colors[i]};
-}
-
-/// Twice the signed area of a screen triangle; positive means back-facing (y-down pixels).
-inline double signedArea2(const glm::dvec2 (&s)[3]) {
-    return (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x);
-}
-
-/// Linear functions of the pixel position for one triangle, relative to a base pixel so that
-/// float keeps its precision far from the origin: value = v[0] + v[1]·dx + v[2]·dy.
-struct Planes {
-    int baseX = 0, baseY = 0;
-    float l1[3], l2[3];        // screen-linear barycentrics of vertices 1 and 2
-    float u1[3], u2[3], q[3];  // λ1/w1, λ2/w2 and Σλi/wi, for perspective and depth
-    glm::vec3 c0, d1, d2;      // colour at vertex 0 and differences to vertices 1 and 2
-
-    float eval(const float (&p)[3], float dx, float dy) const {
-        return p[0] + p[1] * dx + p[2] * dy;
-    }
-};
-
-/// Builds the planes from unsnapped screen positions (double) so that interpolation does not
-/// inherit the snapping error; returns false for a degenerate triangle.
-bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int baseX, int baseY,
-                Planes& p) {
-    const double area = signedArea2(s);
-    if (!(area != 0.0) || !std::isfinite(area)) return false;
-    const double bx = baseX + 0.5, by = baseY + 0.5;
-    const double l1 =
-        ((s[0].x - s[2].x) * (by - s[2].y) - (s[0].y - s[2].y) * (bx - s[2].x)) / area;
-    const double l2 =
-        ((s[1].x - s[0].x) * (by - s[0].y) - (s[1].y - s[0].y) * (bx - s[0].x)) / area;
-    const double l1x = -(s[0].y - s[2].y) / area, l1y = (s[0].x - s[2].x) / area;
-    const double l2x = -(s[1].y - s[0].y) / area, l2y = (s[1].x - s[0].x) / area;
-    const double r0 = 1.0 / v[0].pos.w, r1 = 1.0 / v[1].pos.w, r2 = 1.0 / v[2].pos.w;
-    auto set = [](float(&dst)[3], double c, double a, double b) {
-        dst[0] = static_cast<float>(c);
-        dst[1] = static_cast<float>(a);
-        dst[2] = static_cast<float>(b);
-    };
-    p.baseX = baseX;
-    p.baseY = baseY;
-    set(p.l1, l1, l1x, l1y);
-    set(p.l2, l2, l2x, l2y);
-    set(p.u1, l1 * r1, l1x * r1, l1y * r1);
-    set(p.u2, l2 * r2, l2x * r2, l2y * r2);
-    set(p.q, r0 + l1 * (r1 - r0) + l2 * (r2 - r0), l1x * (r1 - r0) + l2x * (r2 - r0),
-        l1y * (r1 - r0) + l2y * (r2 - r0));
-    p.c0 = v[0].color;
-    p.d1 = v[1].color - v[0].color;
-    p.d2 = v[2].color - v[0].color;
-    return true;
-}
-
-/// Writes one fragment through the shader S: Simple overwrites, Painter and Depth test LESS.
-template <ShaderKind S>
-inline void writeFragment(Framebuffer& fb, int x, int y, float depth, const glm::vec3& color) {
-    const std::size_t i = fb.index(x, y);
-    if constexpr (S != ShaderKind::Simple) {
-        if (!(depth < fb.depth[i])) return;
-        fb.depth[i] = depth;
-    }
-    if constexpr (S != ShaderKind::Depth) fb.color[i] = packColor(color);
-}
-
-/// Per-pixel work of a triangle for one pipeline variant.
-template <ShaderKind S, Interp I>
-struct TriangleShader {
-    Framebuffer& fb;
-    std::size_t& fragments;
-    const Planes* p = nullptr;
-
-    void operator()(int x, int y) const {
-        ++fragments;
-        const auto dx = static_cast<float>(x - p->baseX);
-        const auto dy = static_cast<float>(y - p->baseY);
-        const float q = p->eval(p->q, dx, dy);
-        const float depth = 1.0f / q;
-        float m1, m2;
-        if constexpr (I == Interp::Perspective) {
-            m1 = p->eval(p->u1, dx, dy) * depth;
-            m2 = p->eval(p->u2, dx, dy) * depth;
-        } else {
-            m1 = p->eval(p->l1, dx, dy);
-            m2 = p->eval(p->l2, dx, dy);
-        }
-        writeFragment<S>(fb, x, y, depth, p->c0 + m1 * p->d1 + m2 * p->d2);
-    }
-};
-
-/// Counts coverage instead of shading (fill-rule tests and overdraw views).
-struct CoverageCounter {
-    std::uint16_t* counts;
-    int width;
-    const Planes* p = nullptr;
-    void operator()(int x, int y) const {
-        std::uint16_t& c = counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                                  static_cast<std::size_t>(x)];
-        if (c != std::numeric_limits<std::uint16_t>::max()) ++c;
-    }
-};
-
-/// The triangle front end shared by every variant: fetch, reject, clip, snap, cull, then hand
-/// covered pixels to `sink` (which sees the current triangle's planes through sink.p).
-template <class Sink>
-void drawTriangles(const DrawInput& in, bool cull, int width, int height, Sink& sink,
-                   RenderStats& stats) {
-    const PixelRect screen{0, 0, width - 1, height - 1};
-    const glm::dvec2 guardLo(-kGuardBand, -kGuardBand);
-    const glm::dvec2 guardHi(width + kGuardBand, height + kGuardBand);
-    const float W = static_cast<float>(width), H = static_cast<float>(height);
-    const std::size_t nv = in.clip.size();
-    Planes planes;
-    sink.p = &planes;
-
-    for (std::size_t t = 0; t + 2 < in.indices.size(); t += 3) {
-        const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
-        if (idx[0] >= nv || idx[1] >= nv || idx[2] >= nv) continue;
-        ++stats.trianglesIn;
-        ClipVertex v[3];
-        bool finite = true, allFront = true, anyFront = false;
-        for (int k = 0; k < 3; ++k) {
-            v[k] = fetchVertex(in, idx[k]);
-            const glm::vec4& p = v[k].pos;
-            finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.w);
-            allFront = allFront && p.w >= in.nearPlane;
-            anyFront = anyFront || p.w >= in.nearPlane;
-        }
-        if (!finite || !anyFront) continue;
-        if (allFront) {  // whole triangle off one side of the image: nothing to do
-            auto all = [&](auto pred) {
-                return pred(v[0].pos) && pred(v[1].pos) && pred(v[2].pos);
-            };
-            if (all([](const glm::vec4& p) { return p.x < 0.0f; }) ||
-                all([&](const glm::vec4& p) { return p.x > W * p.w; }) ||
-                all([](const glm::vec4& p) { return p.y < 0.0f; }) ||
-                all([&](const glm::vec4& p) { return p.y > H * p.w; }))
-                continue;
-        }
-        const NearPolygon poly =
-            allFront ? NearPolygon{{v[0], v[1], v[2]}, 3} : clipNear(v, in.nearPlane);
-        bool clipped = !allFront, culled = false, drawn = false;
-
-        for (std::size_t k = 1; k + 1 < poly.size; ++k) {
-            const ClipVertex tri[3] = {poly.v[0], poly.v[k], poly.v[k + 1]};
-            glm::dvec2 s[3];
-            bool inGuard = true;
-            for (int j = 0; j < 3; ++j) {
-                s[j] = glm::dvec2(tri[j].pos.x, tri[j].pos.y) / static_cast<double>(tri[j].pos.w);
-                inGuard = inGuard && s[j].x >= guardLo.x && s[j].x <= guardHi.x &&
-                          s[j].y >= guardLo.y && s[j].y <= guardHi.y;
-            }
-            const double minX = std::min({s[0].x, s[1].x, s[2].x});
-            const double minY = std::min({s[0].y, s[1].y, s[2].y});
-            const int baseX = static_cast<int>(std::clamp(std::floor(minX), 0.0, W - 1.0));
-            const int baseY = static_cast<int>(std::clamp(std::floor(minY), 0.0, H - 1.0));
-            if (!makePlanes(s, tri, baseX, baseY, planes)) continue;
-
-            if (inGuard) {
-                const std::int64_t xs[3] = {snap(s[0].x), snap(s[1].x), snap(s[2].x)};
-                const std::int64_t ys[3] = {snap(s[0].y), snap(s[1].y), snap(s[2].y)};
-                CoverageSetup setup;
-                const Facing facing = setupCoverage(xs, ys, screen, setup);
-                if (facing == Facing::Degenerate) continue;
-                if (cull && facing == Facing::Back) {
-                    culled = true;
-                    continue;
-                }
-                drawn = true;
-                if (!setup.box.empty()) forEachCovered(setup, sink);
-                continue;
-            }
-            // Beyond the guard band: clip the screen triangle to it for coverage only; the
-            // planes above still describe the whole triangle, so interpolation is unchanged.
-            clipped = true;
-            if (cull && signedArea2(s) > 0.0) {
-                culled = true;
-                continue;
-            }
-            const ScreenPolygon cover = clipToRect(s, guardLo, guardHi);
-            for (std::size_t j = 1; j + 1 < cover.size; ++j) {
-                const std::int64_t xs[3] = {snap(cover.v[0].x), snap(cover.v[j].x),
-                                            snap(cover.v[j + 1].x)};
-                const std::int64_t ys[3] = {snap(cover.v[0].y), snap(cover.v[j].y),
-                                            snap(cover.v[j + 1].y)};
-                CoverageSetup setup;
-                if (setupCoverage(xs, ys, screen, setup) == Facing::Degenerate) continue;
-                drawn = true;
-                if (!setup.box.empty()) forEachCovered(setup, sink);
-            }
-        }
-        stats.trianglesClipped += clipped ? 1 : 0;
-        stats.trianglesCulled += (culled && !drawn) ? 1 : 0;
-        stats.trianglesRasterized += drawn ? 1 : 0;
-    }
-}
-
-/// Wireframe: each unique edge once, near-clipped, Bresenham with interpolated attributes.
-template <ShaderKind S, Interp I>
-void drawLines(const DrawInput& in, std::span<const std::uint32_t> edges, Framebuffer& fb,
-               RenderStats& stats) {
-    for (std::size_t e = 0; e + 1 < edges.size(); e += 2) {
-        if (edges[e] >= in.clip.size() || edges[e + 1] >= in.clip.size()) continue;
-        ClipVertex a = fetchVertex(in, edges[e]);
-        ClipVertex b = fetchVertex(in, edges[e + 1]);
-        if (!clipSegmentNear(a, b, in.nearPlane)) continue;
-        const double ax = static_cast<double>(a.pos.x) / a.pos.w,
-                     ay = static_cast<double>(a.pos.y) / a.pos.w;
-        const double bx = static_cast<double>(b.pos.x) / b.pos.w,
-                     by = static_cast<double>(b.pos.y) / b.pos.w;
-        if (!(std::abs(ax) < kLineLimit && std::abs(ay) < kLineLimit && std::abs(bx) < kLineLimit &&
-              std::abs(by) < kLineLimit))
-            continue;
-        ++stats.linesDrawn;
-        const float ra = 1.0f / a.pos.w, rb = 1.0f / b.pos.w;
-        forEachLinePixel(
-            static_cast<std::int64_t>(std::floor(ax)), static_cast<std::int64_t>(std::floor(ay)),
-            static_cast<std::int64_t>(std::floor(bx)), static_cast<std::int64_t>(std::floor(by)),
-            fb.width, fb.height, [&](int x, int y, std::int64_t k, std::int64_t n) {
-                ++stats.fragments;
-                const float t = n > 0 ? static_cast<float>(k) / static_cast<float>(n) : 0.0f;
-                const float wa = (1.0f - t) * ra, wb = t * rb;
-                const float depth = 1.0f / (wa + wb);
-                glm::vec3 c;
-                if constexpr (I == Interp::Perspective)
-                    c = (wa * a.color + wb * b.color) * depth;
-                else
-                    c = a.color + t * (b.color - a.color);
-                writeFragment<S>(fb, x, y, depth, c);
-            });
-    }
-}
-
-/// Vertices: a pointSize square around the pixel holding each vertex in front of the near plane.
-template <ShaderKind S>
-void drawPoints(const DrawInput& in, int pointSize, Framebuffer& fb, RenderStats& stats) {
-    const int lo = -(pointSize - 1) / 2, hi = lo + pointSize - 1;
-    for (std::size_t i = 0; i < in.clip.size(); ++i) {
-        const glm::vec4& p = in.clip[i];
-        if (!(p.w >= in.nearPlane) || !std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-        const double x = std::floor(static_cast<double>(p.x) / p.w),
-                     y = std::floor(static_cast<double>(p.y) / p.w);
-        if (x + hi < 0 || y + hi < 0 || x + lo >= fb.width || y + lo >= fb.height) continue;
-        ++stats.pointsDrawn;
-        const glm::vec3 color = fetchVertex(in, i).color;
-        const int px = static_cast<int>(x), py = static_cast<int>(y);
-        for (int yy = std::max(0, py + lo); yy <= std::min(fb.height - 1, py + hi); ++yy)
-            for (int xx = std::max(0, px + lo); xx <= std::min(fb.width - 1, px + hi); ++xx) {
-                ++stats.fragments;
-                writeFragment<S>(fb, xx, yy, p.w, color);
-            }
-    }
-}
 
 /// The depth shader's second pass: visible depth range mapped through viridis.
 void resolveDepthColors(Framebuffer& fb, RenderStats& stats) {
@@ -318,27 +65,104 @@ void resolveDepthColors(Framebuffer& fb, RenderStats& stats) {
                 packColor(glm::vec3(viridis((fb.depth[i] - static_cast<double>(lo)) / range)));
 }
 
-/// Calls fn with the shader and interpolation as compile-time constants.
+/// The runtime description of a variant, reduced to what matters for the shader so that
+/// settings that change nothing map to the same instantiation.
+struct VariantKey {
+    ShaderKind shader;
+    Interp interp;
+    VaryingLayout layout;
+    TextureFilter filter;
+    bool combine;
+};
+
+/// Whether vertex colour (and so lighting) shows: not in a depth image or a bare texel.
+bool usesColor(const RenderSettings& s) {
+    return s.shader != ShaderKind::Depth && (s.shader != ShaderKind::Texture || s.combine);
+}
+
+VariantKey variantKey(const RenderSettings& s, const DrawInput& in) {
+    const bool texture = s.shader == ShaderKind::Texture;
+    VariantKey k{s.shader, s.interp, {}, texture ? s.filter : TextureFilter::Nearest,
+                 texture && s.combine};
+    k.layout.color = usesColor(s) && !in.colors.empty();
+    k.layout.uv = texture;
+    k.layout.phong = usesColor(s) && s.lighting == Lighting::Phong && !in.normals.empty();
+    return k;
+}
+
+template <class E, E... Values, class Fn>
+void withEnum(E value, Fn&& fn) {
+    ((value == Values ? (fn(std::integral_constant<E, Values>{}), 0) : 0), ...);
+}
+
 template <class Fn>
-void dispatchVariant(ShaderKind shader, Interp interp, Fn&& fn) {
-    auto withInterp = [&](auto s) {
-        if (interp == Interp::Perspective)
-            fn(s, std::integral_constant<Interp, Interp::Perspective>{});
-        else
-            fn(s, std::integral_constant<Interp, Interp::Affine>{});
-    };
-    switch (shader) {
-        case ShaderKind::Simple:
-            withInterp(std::integral_constant<ShaderKind, ShaderKind::Simple>{});
-            break;
-        case ShaderKind::Painter:
-        case ShaderKind::Texture:
-            withInterp(std::integral_constant<ShaderKind, ShaderKind::Painter>{});
-            break;
-        case ShaderKind::Depth:
-            withInterp(std::integral_constant<ShaderKind, ShaderKind::Depth>{});
-            break;
-    }
+void withBool(bool value, Fn&& fn) {
+    if (value)
+        fn(std::true_type{});
+    else
+        fn(std::false_type{});
+}
+
+/// Calls fn with the Variant type for `key`; only meaningful combinations are instantiated.
+template <class Fn>
+void dispatch(const VariantKey& key, Fn&& fn) {
+    withEnum<Interp, Interp::Affine, Interp::Subdivided, Interp::Perspective>(
+        key.interp, [&](auto interp) {
+            constexpr Interp I = decltype(interp)::value;
+            constexpr TextureFilter N = TextureFilter::Nearest;
+            auto colored = [&](auto shader) {
+                constexpr ShaderKind S = decltype(shader)::value;
+                withBool(key.layout.color, [&](auto c) {
+                    withBool(key.layout.phong, [&](auto ph) {
+                        fn(Variant<S, I, decltype(c)::value, false, decltype(ph)::value, N,
+                                   false>{});
+                    });
+                });
+            };
+            switch (key.shader) {
+                case ShaderKind::Simple:
+                    colored(std::integral_constant<ShaderKind, ShaderKind::Simple>{});
+                    break;
+                case ShaderKind::Painter:
+                    colored(std::integral_constant<ShaderKind, ShaderKind::Painter>{});
+                    break;
+                case ShaderKind::Depth:
+                    fn(Variant<ShaderKind::Depth, I, false, false, false, N, false>{});
+                    break;
+                case ShaderKind::Texture:
+                    withEnum<TextureFilter, TextureFilter::Nearest, TextureFilter::Bilinear,
+                             TextureFilter::Trilinear>(key.filter, [&](auto filter) {
+                        constexpr TextureFilter F = decltype(filter)::value;
+                        constexpr ShaderKind T = ShaderKind::Texture;
+                        if (!key.combine) {
+                            fn(Variant<T, I, false, true, false, F, false>{});
+                            return;
+                        }
+                        withBool(key.layout.color, [&](auto c) {
+                            withBool(key.layout.phong, [&](auto ph) {
+                                fn(Variant<T, I, decltype(c)::value, true, decltype(ph)::value,
+                                           F, true>{});
+                            });
+                        });
+                    });
+                    break;
+            }
+        });
+}
+
+/// Bytes per vertex the draw reads or derives, for --stats.
+std::size_t vertexBytes(const RenderSettings& s, const Mesh& mesh, const VariantKey& key) {
+    std::size_t bytes = sizeof(glm::vec3) + sizeof(glm::vec4);  // position, clip position
+    if (key.layout.color && mesh.hasColors()) bytes += sizeof(glm::vec3);
+    if (key.layout.color && s.lighting == Lighting::Gouraud) bytes += 2 * sizeof(glm::vec3);
+    if (key.layout.phong || s.showNormals) bytes += sizeof(glm::vec3);  // normals
+    if (key.layout.uv && mesh.hasUvs()) bytes += sizeof(glm::vec2);
+    return bytes;
+}
+
+const Texture& whiteTexture() {
+    static const Texture white;
+    return white;
 }
 
 }  // namespace
@@ -347,22 +171,27 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
                            Framebuffer& frame) {
     RenderStats stats;
     if (frame.width <= 0 || frame.height <= 0) return stats;
-    dispatchVariant(settings.shader, settings.interp, [&](auto shader, auto interp) {
-        constexpr ShaderKind S = decltype(shader)::value;
-        constexpr Interp I = decltype(interp)::value;
+    const VariantKey key = variantKey(settings, input);
+    stats.varyings = 1 + key.layout.count();
+    stats.varyingNames = key.layout.names();
+    const DrawConstants constants{input.texture ? input.texture : &whiteTexture(), input.lighting,
+                                  input.eye, glm::vec3(1.0f)};
+    const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
+    dispatch(key, [&](auto variant) {
+        using V = decltype(variant);
         switch (settings.mode) {
             case DrawMode::Solid: {
-                TriangleShader<S, I> sink{frame, stats.fragments};
-                drawTriangles(input, settings.cullBackFaces, frame.width, frame.height, sink,
-                              stats);
+                RasterContext ctx{&frame, &constants, &stats.fragments, subdivision};
+                drawTriangles(input, V::kLayout, settings.cullBackFaces, frame.width,
+                              frame.height, &rasterizeTriangle<V>, &ctx, stats);
                 break;
             }
             case DrawMode::Wireframe:
                 uniqueEdges(input.indices, edges_);
-                drawLines<S, I>(input, edges_, frame, stats);
+                drawLines<V>(input, edges_, frame, constants, stats);
                 break;
             case DrawMode::Vertices:
-                drawPoints<S>(input, settings.pointSize, frame, stats);
+                drawPoints<V>(input, settings.pointSize, frame, constants, stats);
                 break;
         }
     });
@@ -375,8 +204,9 @@ void Renderer::countCoverage(const DrawInput& input, const RenderSettings& setti
     counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
     if (width <= 0 || height <= 0) return;
     RenderStats stats;
-    CoverageCounter sink{counts.data(), width};
-    drawTriangles(input, settings.cullBackFaces, width, height, sink, stats);
+    CoverageCounts ctx{counts.data(), width};
+    drawTriangles(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
+                  &ctx, stats);
 }
 
 RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
@@ -386,29 +216,74 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     frame.clear(rgbaFromHex(settings.background));
     // The transform is built in double and applied in float: one matrix, no per-vertex doubles.
     const glm::mat4 clipFromWorldF(clipFromWorld(cam));
-    const auto& positions = scene.mesh.positions;
+    const Mesh& mesh = scene.mesh;
+    const auto& positions = mesh.positions;
     clip_.resize(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i)
         clip_[i] = clipFromWorldF * glm::vec4(positions[i], 1.0f);
-    std::span<const glm::vec3> colors = scene.mesh.colors;
-    if (settings.lighting == Lighting::Gouraud) {
+
+    DrawInput input{.clip = clip_,
+                    .colors = mesh.colors,
+                    .indices = mesh.indices,
+                    .nearPlane = static_cast<float>(resolveNearPlane(settings, mesh)),
+                    .texture = scene.texture.get(),
+                    .lighting = prepareLighting(lightingParams(scene)),
+                    .eye = glm::vec3(cam.eye)};
+    // Lighting only changes colour: a depth image or a bare texel needs no normals.
+    const bool lit = settings.lighting != Lighting::Off && usesColor(settings);
+    if (lit || settings.showNormals) normals_ = computeVertexNormals(mesh);
+    if (lit && settings.lighting == Lighting::Gouraud) {
         // Gouraud: the formula once per vertex in world space; the rasterizer then
         // interpolates the lit colour like any other vertex colour.
-        const std::vector<glm::vec3> normals = computeVertexNormals(scene.mesh);
-        const FastLighting lighting = prepareLighting(lightingParams(scene));
-        const glm::vec3 eye(cam.eye);
         litColors_.resize(positions.size());
         for (std::size_t i = 0; i < positions.size(); ++i) {
-            const glm::vec3 rgb = scene.mesh.hasColors() ? scene.mesh.colors[i] : glm::vec3(1.0f);
-            litColors_[i] = shade(rgb, lightIntensity(positions[i], normals[i], eye, lighting));
+            const glm::vec3 rgb = mesh.hasColors() ? mesh.colors[i] : glm::vec3(1.0f);
+            litColors_[i] =
+                shade(rgb, lightIntensity(positions[i], normals_[i], input.eye, input.lighting));
         }
-        colors = litColors_;
+        input.colors = litColors_;
     }
-    DrawInput input{.clip = clip_,
-                    .colors = colors,
-                    .indices = scene.mesh.indices,
-                    .nearPlane = static_cast<float>(resolveNearPlane(settings, scene.mesh))};
-    return draw(input, settings, frame);
+    if (lit && settings.lighting == Lighting::Phong) {
+        input.normals = normals_;
+        input.positions = positions;
+    }
+    if (settings.shader == ShaderKind::Texture) input.uvs = mesh.uvs;
+
+    RenderStats stats = draw(input, settings, frame);
+    stats.vertexBytes = vertexBytes(settings, mesh, variantKey(settings, input));
+    if (settings.showNormals) drawNormals(scene, settings, input.nearPlane, frame, stats);
+    return stats;
+}
+
+void Renderer::drawNormals(const Scene& scene, const RenderSettings& settings, float nearPlane,
+                           Framebuffer& frame, RenderStats& stats) {
+    const Mesh& mesh = scene.mesh;
+    const float length = settings.normalLength > 0.0 ? static_cast<float>(settings.normalLength)
+                                                     : normalDisplayLength(mesh);
+    const glm::mat4 clipFromWorldF(clipFromWorld(scene.camera));
+    normalClip_.clear();
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        if (normals_[i] == glm::vec3(0.0f)) continue;  // no face: no direction to show
+        const glm::vec3 p = mesh.positions[i];
+        normalClip_.push_back(clipFromWorldF * glm::vec4(p, 1.0f));
+        normalClip_.push_back(clipFromWorldF * glm::vec4(p + length * normals_[i], 1.0f));
+    }
+    edges_.resize(normalClip_.size());
+    for (std::size_t i = 0; i < edges_.size(); ++i) edges_[i] = static_cast<std::uint32_t>(i);
+    const DrawInput segments{.clip = normalClip_, .nearPlane = nearPlane};
+    const DrawConstants red{&whiteTexture(), {}, glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f)};
+    // Simple overwrites; every other shader keeps the depth test, so hidden normals stay hidden.
+    constexpr Interp P = Interp::Perspective;
+    constexpr TextureFilter N = TextureFilter::Nearest;
+    RenderStats lines;
+    if (settings.shader == ShaderKind::Simple)
+        drawLines<Variant<ShaderKind::Simple, P, false, false, false, N, false>>(segments, edges_,
+                                                                                 frame, red, lines);
+    else
+        drawLines<Variant<ShaderKind::Painter, P, false, false, false, N, false>>(
+            segments, edges_, frame, red, lines);
+    stats.normalsDrawn = lines.linesDrawn;
+    stats.fragments += lines.fragments;
 }
 
 }  // namespace facet

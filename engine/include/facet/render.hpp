@@ -75,6 +75,10 @@ class Renderer {
                        int height, std::vector<std::uint16_t>& counts);
 
   private:
+    /// The normals display: a red segment per vertex normal, after the main pass.
+    void drawNormals(const Scene& scene, const RenderSettings& settings, float nearPlane,
+                     Framebuffer& frame, RenderStats& stats);
+
     std::vector<glm::vec4> clip_;
     std::vector<glm::vec3> litColors_;
     std::vector<glm::vec3> normals_;

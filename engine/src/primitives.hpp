@@ -1,0 +1,186 @@
+#pragma once
+// The per-variant pixel loops of the fast path: triangles (after the shared front end), lines
+// and points. Each is a template over a Variant (fragment.hpp), instantiated once per pipeline
+// state by the dispatcher in pipeline.cpp.
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "clip.hpp"
+#include "fragment.hpp"
+#include "line_raster.hpp"
+#include "triangle_setup.hpp"
+
+namespace facet::detail {
+
+/// What a variant's triangle rasterizer needs besides the triangle.
+struct RasterContext {
+    Framebuffer* fb;
+    const DrawConstants* constants;
+    std::size_t* fragments;
+    int subdivision;  ///< N of Interp::Subdivided
+};
+
+/// Perspective-correct weights of vertices 1 and 2 at (dx, dy); false where 1/w is not positive
+/// and finite (possible only when extrapolating outside the triangle).
+inline bool perspectiveWeights(const Planes& p, float dx, float dy, float& m1, float& m2) {
+    const float q = Planes::eval(p.q, dx, dy);
+    if (!(q > 0.0f) || !std::isfinite(q)) return false;
+    const float r = 1.0f / q;
+    m1 = Planes::eval(p.u1, dx, dy) * r;
+    m2 = Planes::eval(p.u2, dx, dy) * r;
+    return true;
+}
+
+/// The triangle pixel loop of variant V.
+template <class V>
+void rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
+    Framebuffer& fb = *ctx.fb;
+    const DrawConstants& k = *ctx.constants;
+    constexpr VaryingLayout L = V::kLayout;
+    // Subdivided: the exact weights at the two ends of the current N-pixel span, kept while the
+    // loop stays in it (rows are walked left to right).
+    int spanY = INT_MIN, spanX0 = INT_MIN;
+    bool spanExact = false;
+    float s1a = 0.0f, s2a = 0.0f, s1b = 0.0f, s2b = 0.0f;
+    const int n = ctx.subdivision;
+    const float invN = 1.0f / static_cast<float>(n);
+
+    forEachCovered(setup, [&](int x, int y) {
+        ++*ctx.fragments;
+        const auto dx = static_cast<float>(x - p.baseX);
+        const auto dy = static_cast<float>(y - p.baseY);
+        const float depth = 1.0f / Planes::eval(p.q, dx, dy);
+        const std::size_t i = fb.index(x, y);
+        if (!passesDepth<V::kShader>(fb, i, depth)) return;
+
+        float m1 = 0.0f, m2 = 0.0f;
+        if constexpr (V::kInterp == Interp::Affine) {
+            m1 = Planes::eval(p.l1, dx, dy);
+            m2 = Planes::eval(p.l2, dx, dy);
+        } else if constexpr (V::kInterp == Interp::Perspective) {
+            m1 = Planes::eval(p.u1, dx, dy) * depth;
+            m2 = Planes::eval(p.u2, dx, dy) * depth;
+        } else {
+            const int x0 = x / n * n;  // x >= 0: division is floor
+            if (y != spanY || x0 != spanX0) {
+                spanY = y;
+                spanX0 = x0;
+                const auto ex = static_cast<float>(x0 - p.baseX);
+                spanExact = !perspectiveWeights(p, ex, dy, s1a, s2a) ||
+                            !perspectiveWeights(p, ex + static_cast<float>(n), dy, s1b, s2b);
+            }
+            if (spanExact) {  // the span's ends are unusable: exact at this pixel instead
+                m1 = Planes::eval(p.u1, dx, dy) * depth;
+                m2 = Planes::eval(p.u2, dx, dy) * depth;
+            } else {
+                const float t = static_cast<float>(x - x0) * invN;
+                m1 = s1a + (s1b - s1a) * t;
+                m2 = s2a + (s2b - s2a) * t;
+            }
+        }
+        float a[V::kCount > 0 ? V::kCount : 1];
+        for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
+
+        float lod = 0.0f;
+        if constexpr (V::kDerivatives) {
+            // d(weights)/dx and /dy of the mode's own interpolation: constant when affine, the
+            // analytic derivative of the perspective-correct weights otherwise.
+            float w1x = p.l1[1], w1y = p.l1[2], w2x = p.l2[1], w2y = p.l2[2];
+            if constexpr (V::kInterp != Interp::Affine) {
+                const float pm1 = Planes::eval(p.u1, dx, dy) * depth;
+                const float pm2 = Planes::eval(p.u2, dx, dy) * depth;
+                w1x = (p.u1[1] - pm1 * p.q[1]) * depth;
+                w1y = (p.u1[2] - pm1 * p.q[2]) * depth;
+                w2x = (p.u2[1] - pm2 * p.q[1]) * depth;
+                w2y = (p.u2[2] - pm2 * p.q[2]) * depth;
+            }
+            const int u = L.uvAt();
+            const glm::vec2 d1(p.d1[u], p.d1[u + 1]), d2(p.d2[u], p.d2[u + 1]);
+            lod = mipLevel(*k.texture, d1 * w1x + d2 * w2x, d1 * w1y + d2 * w2y);
+        }
+        storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
+    });
+}
+
+/// Counts coverage instead of shading (fill-rule tests and overdraw views).
+struct CoverageCounts {
+    std::uint16_t* counts;
+    int width;
+};
+void countTriangle(void* context, const CoverageSetup& setup, const Planes& planes);
+
+/// Screen coordinates beyond this are not drawn as lines (their integer maths would overflow).
+inline constexpr double kLineLimit = 1099511627776.0;  // 2^40
+
+/// Wireframe: each listed edge once, near-clipped, Bresenham with interpolated varyings
+/// (Subdivided is perspective-correct on lines). Texture lookups on lines use level 0.
+template <class V>
+void drawLines(const DrawInput& in, std::span<const std::uint32_t> edges, Framebuffer& fb,
+               const DrawConstants& k, RenderStats& stats) {
+    constexpr VaryingLayout L = V::kLayout;
+    for (std::size_t e = 0; e + 1 < edges.size(); e += 2) {
+        if (edges[e] >= in.clip.size() || edges[e + 1] >= in.clip.size()) continue;
+        ClipVertex a = fetchVertex(in, L, edges[e]);
+        ClipVertex b = fetchVertex(in, L, edges[e + 1]);
+        if (!clipSegmentNear(a, b, in.nearPlane)) continue;
+        const double ax = static_cast<double>(a.pos.x) / a.pos.w,
+                     ay = static_cast<double>(a.pos.y) / a.pos.w;
+        const double bx = static_cast<double>(b.pos.x) / b.pos.w,
+                     by = static_cast<double>(b.pos.y) / b.pos.w;
+        if (!(std::abs(ax) < kLineLimit && std::abs(ay) < kLineLimit && std::abs(bx) < kLineLimit &&
+              std::abs(by) < kLineLimit))
+            continue;
+        ++stats.linesDrawn;
+        const float ra = 1.0f / a.pos.w, rb = 1.0f / b.pos.w;
+        forEachLinePixel(
+            static_cast<std::int64_t>(std::floor(ax)), static_cast<std::int64_t>(std::floor(ay)),
+            static_cast<std::int64_t>(std::floor(bx)), static_cast<std::int64_t>(std::floor(by)),
+            fb.width, fb.height, [&](int x, int y, std::int64_t step, std::int64_t steps) {
+                ++stats.fragments;
+                const float t =
+                    steps > 0 ? static_cast<float>(step) / static_cast<float>(steps) : 0.0f;
+                const float wa = (1.0f - t) * ra, wb = t * rb;
+                const float depth = 1.0f / (wa + wb);
+                const std::size_t i = fb.index(x, y);
+                if (!passesDepth<V::kShader>(fb, i, depth)) return;
+                const float m = V::kInterp == Interp::Affine ? t : wb * depth;
+                float v[V::kCount > 0 ? V::kCount : 1];
+                for (std::size_t j = 0; j < static_cast<std::size_t>(V::kCount); ++j)
+                    v[j] = a.a[j] + m * (b.a[j] - a.a[j]);
+                storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(v, k, 0.0f));
+            });
+    }
+}
+
+/// Vertices: a pointSize square around the pixel holding each vertex in front of the near
+/// plane, in the vertex's own colour (lit at the vertex for Phong, texel at its uv).
+template <class V>
+void drawPoints(const DrawInput& in, int pointSize, Framebuffer& fb, const DrawConstants& k,
+                RenderStats& stats) {
+    const int lo = -(pointSize - 1) / 2, hi = lo + pointSize - 1;
+    for (std::size_t i = 0; i < in.clip.size(); ++i) {
+        const glm::vec4& p = in.clip[i];
+        if (!(p.w >= in.nearPlane) || !std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+        const double x = std::floor(static_cast<double>(p.x) / p.w),
+                     y = std::floor(static_cast<double>(p.y) / p.w);
+        if (x + hi < 0 || y + hi < 0 || x + lo >= fb.width || y + lo >= fb.height) continue;
+        ++stats.pointsDrawn;
+        const ClipVertex v = fetchVertex(in, V::kLayout, i);
+        const glm::vec3 color = fragmentColor<V>(v.a.data(), k, 0.0f);
+        const int px = static_cast<int>(x), py = static_cast<int>(y);
+        for (int yy = std::max(0, py + lo); yy <= std::min(fb.height - 1, py + hi); ++yy)
+            for (int xx = std::max(0, px + lo); xx <= std::min(fb.width - 1, px + hi); ++xx) {
+                ++stats.fragments;
+                const std::size_t j = fb.index(xx, yy);
+                if (passesDepth<V::kShader>(fb, j, p.w)) storeFragment<V::kShader>(fb, j, p.w, color);
+            }
+    }
+}
+
+}  // namespace facet::detail
