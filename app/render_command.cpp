@@ -32,6 +32,7 @@ struct RenderOptions {
     bool cull = false;
     bool combine = false;
     bool normals = false;
+    bool legend = false;
     double normalLength = 0.0;
     bool stats = false;
     double nearPlane = 0.0;
@@ -86,6 +87,7 @@ int runRender(const RenderOptions& o) {
     settings.combine = o.combine;
     settings.showNormals = o.normals || o.normalLength > 0.0;
     settings.normalLength = o.normalLength;
+    settings.depthLegend = o.legend;
     settings.cullBackFaces = o.cull;
     settings.nearPlane = o.nearPlane;
     settings.pointSize = o.pointSize;
@@ -198,6 +200,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("--combine", opts->combine,
                   "Texture shader: multiply the texel by the (lit) vertex colour");
     cmd->add_flag("--normals", opts->normals, "Draw vertex normals as red segments");
+    cmd->add_flag("--legend", opts->legend,
+                  "Depth shader: draw a legend bar with the near and far depth it maps");
     cmd->add_option("--normal-length", opts->normalLength,
                     "Length of the normal segments in world units (implies --normals; default: "
                     "bounding-box diagonal / 100)")

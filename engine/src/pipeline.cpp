@@ -9,6 +9,7 @@
 
 #include "facet/camera.hpp"
 #include "facet/colormap.hpp"
+#include "facet/legend.hpp"
 #include "facet/lighting.hpp"
 #include "facet/normals.hpp"
 #include "facet/render.hpp"
@@ -252,6 +253,9 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     RenderStats stats = draw(input, settings, frame);
     stats.vertexBytes = vertexBytes(settings, mesh, variantKey(settings, input));
     if (settings.showNormals) drawNormals(scene, settings, input.nearPlane, frame, stats);
+    // Last, so neither the normals nor the depth colours cover it.
+    if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
+        drawDepthLegend(frame, stats.depthNear, stats.depthFar);
     return stats;
 }
 

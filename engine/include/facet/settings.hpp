@@ -45,6 +45,7 @@ struct RenderSettings {
     bool combine = false;                 ///< Texture shader: texel × (lit) vertex colour
     bool showNormals = false;             ///< draw each vertex normal as a red segment
     double normalLength = 0.0;            ///< world length of those segments; <= 0: diagonal/100
+    bool depthLegend = false;             ///< Depth shader: draw the near/far legend bar
     bool cullBackFaces = false;           ///< drop triangles seen from behind
     std::uint32_t background = 0x5C5C5C;  ///< 0xRRGGBB, the course's grey
     int pointSize = 5;                    ///< side of the vertex squares, in pixels
