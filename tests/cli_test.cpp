@@ -96,6 +96,15 @@ TEST_F(Cli, BadInputGivesOneLineOnStderrAndExitCode2) {
         "render " + scene + " -o " + out("x.png") + " --size 0x10",
         "render " + scene + " -o " + out("x.png") + " --size big",
         "render " + scene + " -o " + out("x.png") + " --background 12345G",
+        "render " + scene + " -o " + out("x.png") + " --interp subdivided:1",
+        "render " + scene + " -o " + out("x.png") + " --interp subdivided:x",
+        "render " + scene + " -o " + out("x.png") + " --interp affine:8",
+        "render " + scene + " -o " + out("x.png") + " --lighting flat",
+        "render " + scene + " -o " + out("x.png") + " --filter cubic",
+        "render " + scene + " -o " + out("x.png") + " --shader texture",
+        "render " + scene + " -o " + out("x.png") + " --texture " + data + "/no_such.png",
+        "render " + scene + " -o " + out("x.png") + " --texture " + data + "/tex_not_an_image.png",
+        "render " + scene + " -o " + out("x.png") + " --normal-length -1",
         "render " + scene,
         "render --frobnicate",
         "",
@@ -113,6 +122,65 @@ TEST_F(Cli, BadInputGivesOneLineOnStderrAndExitCode2) {
     EXPECT_FALSE(fs::exists(out("x.png")));
 }
 
+TEST_F(Cli, TextureErrorsNameTheImage) {
+    const std::string data = FACET_TEST_DATA;
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    Outcome r = run("render " + scene + " -o " + out("x.png") + " --texture " + data +
+                    "/tex_truncated.png --shader texture");
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_NE(r.out.find("tex_truncated.png"), std::string::npos) << r.out;
+    r = run("render " + scene + " -o " + out("x.png") + " --shader texture");
+    EXPECT_NE(r.out.find("needs a texture"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(out("x.png")));
+}
+
+// The commands, as a user types them, on the course and Spot scenes.
+TEST_F(Cli, ShadingCommandsOfTheCourse) {
+    const std::string shared = std::string(FACET_SHARED_DIR) + "/data/";
+    if (!fs::exists(shared + "course/brick.jpg")) GTEST_SKIP() << "shared data not available";
+    const std::string wall = shared + "course/example_textured.scene --shader texture --texture " +
+                             shared + "course/brick.jpg";
+    const std::string cases[] = {
+        shared + "course/example2.scene --shader painter --lighting gouraud",
+        shared + "course/example2.scene --lighting phong --normals",
+        wall + " --interp affine",
+        wall + " --interp perspective --filter trilinear",
+        wall + " --interp subdivided:8 --filter nearest",
+        shared + "scenes/spot_1280x720.scene --shader texture --combine --lighting gouraud",
+        shared + "scenes/spot_1280x720.scene --shader depth --legend",
+    };
+    for (const std::string& args : cases) {
+        const Outcome r = run("render " + args + " -o " + out("c.png") + " --stats");
+        EXPECT_EQ(r.exitCode, 0) << args << "\n" << r.out;
+        EXPECT_GT(pngSize(out("c.png")).first, 0) << args;
+        fs::remove(out("c.png"));
+    }
+}
+
+// "Only what the scene needs": the varyings and bytes per vertex follow the settings and mesh.
+TEST_F(Cli, StatsReportVaryingsAndBytesPerVertex) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";  // has colours
+    auto stats = [&](const std::string& opts) {
+        return run("render " + scene + " -o " + out("v.png") + " --size 64x36 --stats " + opts).out;
+    };
+    EXPECT_NE(stats("").find("per vertex: 40 bytes; varyings: 4 floats (1/w rgb)"),
+              std::string::npos)
+        << stats("");
+    EXPECT_NE(stats("--shader depth").find("varyings: 1 floats (1/w)"), std::string::npos);
+    EXPECT_NE(stats("--lighting gouraud").find("varyings: 4 floats (1/w rgb)"), std::string::npos);
+    EXPECT_NE(stats("--lighting phong").find("varyings: 10 floats (1/w rgb n p)"),
+              std::string::npos);
+    // A depth image needs no normals even with lighting on.
+    EXPECT_NE(stats("--shader depth --lighting phong").find("per vertex: 28 bytes; varyings: 1 "),
+              std::string::npos);
+    // A mesh without colours interpolates depth only.
+    std::ofstream(out("plain.scene")) << FACET_TEST_DATA << "/off_no_colors.off\n0 0 -4\n0 0 0\n"
+                                      << "0 -1 0\n200\n64 48\n1\n0 0 -8 1\n0.5 0.5 0.5 1\n";
+    const Outcome r = run("render " + out("plain.scene") + " -o " + out("p.png") + " --stats");
+    EXPECT_NE(r.out.find("per vertex: 28 bytes; varyings: 1 floats (1/w)"), std::string::npos)
+        << r.out;
+}
+
 TEST_F(Cli, UnwritableOutputIsAFailureNotACrash) {
     const Outcome r = run(std::string("render ") + FACET_ASSETS_DIR + "/default.scene -o " +
                           dir.string() + "/missing/folder/x.png --size 64x64");
@@ -123,8 +191,9 @@ TEST_F(Cli, UnwritableOutputIsAFailureNotACrash) {
 TEST_F(Cli, HelpListsTheOptions) {
     const Outcome r = run("render --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* opt :
-         {"--mode", "--shader", "--interp", "--lighting", "--cull", "--size", "--background"})
+    for (const char* opt : {"--mode", "--shader", "--interp", "--lighting", "--cull", "--size",
+                            "--background", "--texture", "--filter", "--combine", "--normals",
+                            "--normal-length", "--legend", "subdivided"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
