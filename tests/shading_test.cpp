@@ -231,3 +231,46 @@ TEST(Shading, CombineMultipliesTheTexelByTheColour) {
 }
 
 }  // namespace
+
+namespace {
+
+// Lighting parameters are plain scene fields: an edit shows in the next frame of the same
+// renderer, with nothing reloaded or rebuilt.
+TEST(Shading, LightingEditsShowInTheNextFrame) {
+    auto start = [] {
+        Scene x = sceneFacing(square(0.0f, 2.0f), 6.0, 100.0, 64);
+        x.light.position = {0.5, 0.5, -2.0, 1.0};
+        x.ambient = 0.2;
+        x.material = {0.2, 0.4, 0.2, 8.0};
+        return x;
+    };
+    Scene s = start();
+    facet::Renderer r;
+    Framebuffer f;
+    for (const Lighting lighting : {Lighting::Gouraud, Lighting::Phong}) {
+        RenderSettings set;
+        set.lighting = lighting;
+        r.render(s, set, f);
+        std::vector<std::uint32_t> previous = f.color;
+        const auto edits = {+[](Scene& x) { x.material.kd *= 0.5; },
+                            +[](Scene& x) { x.material.ks = 0.9; },
+                            +[](Scene& x) { x.material.s = 40.0; },
+                            +[](Scene& x) { x.ambient = 0.6; },
+                            +[](Scene& x) { x.material.ka = 0.9; },
+                            +[](Scene& x) { x.light.intensity = 2.0; },
+                            +[](Scene& x) {
+                                x.light.position = {0.0, 0.0, -1.0, 0.0};
+                            }};
+        int k = 0;
+        for (auto edit : edits) {
+            edit(s);
+            r.render(s, set, f);
+            EXPECT_NE(f.color, previous) << facet::toString(lighting) << ", edit " << k;
+            previous = f.color;
+            ++k;
+        }
+        s = start();
+    }
+}
+
+}  // namespace
