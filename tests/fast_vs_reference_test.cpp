@@ -46,7 +46,16 @@ struct Case {
     bool cull;
     double dolly = 1.0;  ///< eye moved to look + dolly·(eye - look): < 1 moves in, clips
     facet::Lighting lighting = facet::Lighting::Off;
+    facet::TextureFilter filter = facet::TextureFilter::Bilinear;
+    bool combine = false;
+    bool normals = false;
+    int subdivision = 8;
 };
+
+/// The course's textured facet names no texture; the course pairs it with the brick image.
+std::string textureFor(const std::string& scene) {
+    return scene == "course/example_textured" ? "course/brick.jpg" : "";
+}
 
 std::string caseName(const Case& c) {
     std::string name = std::filesystem::path(c.scene).filename().string();
@@ -56,11 +65,18 @@ std::string caseName(const Case& c) {
         name += '_';
         name += part;
     }
+    if (c.interp == Interp::Subdivided) name += std::to_string(c.subdivision);
     if (c.cull) name += "_cull";
     if (c.lighting != facet::Lighting::Off) {
         name += '_';
         name += facet::toString(c.lighting);
     }
+    if (c.shader == ShaderKind::Texture) {
+        name += '_';
+        name += facet::toString(c.filter);
+        if (c.combine) name += "_combine";
+    }
+    if (c.normals) name += "_normals";
     if (c.dolly != 1.0) name += "_dolly" + std::to_string(static_cast<int>(c.dolly * 1000));
     return name;
 }
@@ -90,6 +106,46 @@ std::vector<Case> allCases() {
             for (const Interp interp : {Interp::Affine, Interp::Perspective})
                 cases.push_back({scene, mode, ShaderKind::Painter, interp, false, 1.0,
                                  facet::Lighting::Gouraud});
+    // Phong: per-pixel lighting through every mode; subdivided colour interpolation.
+    for (const std::string& scene : scenes) {
+        for (const DrawMode mode : {DrawMode::Vertices, DrawMode::Wireframe, DrawMode::Solid})
+            cases.push_back({scene, mode, ShaderKind::Painter, Interp::Perspective, false, 1.0,
+                             facet::Lighting::Phong});
+        cases.push_back({scene, DrawMode::Solid, ShaderKind::Painter, Interp::Affine, false, 1.0,
+                         facet::Lighting::Phong});
+        cases.push_back({scene, DrawMode::Solid, ShaderKind::Painter, Interp::Subdivided, false});
+        cases.push_back({scene, DrawMode::Solid, ShaderKind::Painter, Interp::Subdivided, false,
+                         1.0, facet::Lighting::Gouraud, facet::TextureFilter::Bilinear, false,
+                         false, 32});
+    }
+    // Textures on the textured scenes: every filter × interpolation, then combined with each
+    // lighting, lines and points.
+    using facet::Lighting;
+    using facet::TextureFilter;
+    for (const std::string scene :
+         {"course/example_textured", "scenes/spot_1280x720", "scenes/spot_1920x1080"}) {
+        for (const TextureFilter filter :
+             {TextureFilter::Nearest, TextureFilter::Bilinear, TextureFilter::Trilinear})
+            for (const Interp interp : {Interp::Affine, Interp::Subdivided, Interp::Perspective})
+                cases.push_back({scene, DrawMode::Solid, ShaderKind::Texture, interp, false, 1.0,
+                                 Lighting::Off, filter});
+        for (const Lighting lighting : {Lighting::Off, Lighting::Gouraud, Lighting::Phong})
+            cases.push_back({scene, DrawMode::Solid, ShaderKind::Texture, Interp::Perspective,
+                             false, 1.0, lighting, TextureFilter::Trilinear, true});
+        for (const DrawMode mode : {DrawMode::Vertices, DrawMode::Wireframe})
+            cases.push_back({scene, mode, ShaderKind::Texture, Interp::Perspective, false, 1.0,
+                             Lighting::Phong, TextureFilter::Bilinear, true});
+    }
+    // The normals display over each shader.
+    for (const char* scene : {"course/example2", "scenes/bunny_1280x720"})
+        for (const ShaderKind shader : {ShaderKind::Simple, ShaderKind::Painter, ShaderKind::Depth})
+            cases.push_back({scene, DrawMode::Solid, shader, Interp::Perspective, false, 1.0,
+                             Lighting::Off, TextureFilter::Bilinear, false, true});
+    // Close-ups of the lit, textured cow: clipped triangles with every varying.
+    for (const double dolly : {0.3, 0.1})
+        for (const Interp interp : {Interp::Affine, Interp::Subdivided, Interp::Perspective})
+            cases.push_back({"scenes/spot_1280x720", DrawMode::Solid, ShaderKind::Texture, interp,
+                             false, dolly, Lighting::Phong, TextureFilter::Trilinear, true});
     // Close-ups with the eye near or inside the mesh: geometry crosses the near plane and runs
     // far beyond the image (near clipping, guard band, very long lines).
     for (const char* scene : {"course/example2", "scenes/bunny_1280x720", "scenes/spot_1280x720"}) {
@@ -139,13 +195,19 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     std::string error;
     const facet::Scene* loaded = loadCached(path, error);
     ASSERT_NE(loaded, nullptr) << error;
-    facet::Scene dollied;
+    facet::Scene changed;
     const facet::Scene* scene = loaded;
-    if (c.dolly != 1.0) {
-        dollied = *loaded;
-        facet::Camera& cam = dollied.camera;
+    if (c.dolly != 1.0 || (c.shader == ShaderKind::Texture && !textureFor(c.scene).empty())) {
+        changed = *loaded;
+        facet::Camera& cam = changed.camera;
         cam.eye = cam.look + c.dolly * (cam.eye - cam.look);
-        scene = &dollied;
+        if (c.shader == ShaderKind::Texture && !textureFor(c.scene).empty()) {
+            const std::string image =
+                std::string(FACET_SHARED_DIR) + "/data/" + textureFor(c.scene);
+            const facet::Status st = facet::loadSceneTexture(changed, image);
+            ASSERT_FALSE(st.has_value()) << st->what();
+        }
+        scene = &changed;
     }
 
     facet::RenderSettings settings;
@@ -154,6 +216,10 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     settings.interp = c.interp;
     settings.cullBackFaces = c.cull;
     settings.lighting = c.lighting;
+    settings.filter = c.filter;
+    settings.combine = c.combine;
+    settings.showNormals = c.normals;
+    settings.subdivision = c.subdivision;
 
     const facet::reference::Image ref = facet::reference::render(*scene, settings);
     facet::Renderer renderer;

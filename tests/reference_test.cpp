@@ -3,24 +3,33 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "facet/colormap.hpp"
 #include "facet/framebuffer.hpp"
+#include "facet/lighting.hpp"
+#include "facet/normals.hpp"
+#include "facet/procedural.hpp"
 #include "facet/reference.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
+#include "facet/texture.hpp"
 
 namespace {
 
 using facet::DrawMode;
 using facet::Interp;
+using facet::Lighting;
 using facet::RenderSettings;
 using facet::ShaderKind;
 using facet::reference::draw;
@@ -495,6 +504,402 @@ TEST(Reference, BackgroundAndWhiteDefault) {
     EXPECT_EQ(colorAt(img, 5, 5), glm::dvec3(0x5C / 255.0));
     EXPECT_EQ(img.toRgba()[35], facet::rgbaFromHex(0x5C5C5C));
     EXPECT_TRUE(std::isinf(img.depth[35]));
+}
+
+// ---- Shading: lighting (rule 12), textures (rules 8(d), 13), interpolation (rule 11) and the
+// normals display (rule 14).
+
+// The course camera looking at the origin from z = -5: world +Y is up on screen, +X to the left.
+facet::Scene sceneWith(const facet::Mesh& mesh, int size, double focal) {
+    facet::Scene scene;
+    scene.camera = {{0.0, 0.0, -5.0}, {0.0, 0.0, 0.0}, {0.0, -1.0, 0.0}, focal, size, size};
+    scene.mesh = mesh;
+    return scene;
+}
+
+RenderSettings lit(DrawMode mode, Lighting lighting) {
+    RenderSettings s = settingsFor(mode);
+    s.lighting = lighting;
+    return s;
+}
+
+TEST(Reference, PhongEqualsGouraudOnAFlatTriangle) {
+    // One triangle facing the camera (normal -z at every vertex), a directional light and no
+    // specular term: I is the same everywhere, so both are flat and equal to the hand value.
+    facet::Mesh mesh;
+    mesh.positions = {{-1.5f, -1.5f, 0.0f}, {-1.5f, 1.5f, 0.0f}, {1.5f, -1.5f, 0.0f}};
+    mesh.indices = {0, 1, 2};
+    facet::Scene scene = sceneWith(mesh, 64, 80.0);
+    scene.light = {{0.3, 0.2, -1.0, 0.0}, 1.0};
+    scene.material = {0.2, 0.6, 0.0, 1.0};
+    const double expected = 0.2 + 0.6 / std::sqrt(1.13);  // Ia·Ka + Id·Kd·(n·l)
+    const Image gouraud = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud));
+    const Image phong = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong));
+    int n = 0;
+    for (std::size_t i = 0; i < phong.color.size(); ++i) {
+        ASSERT_EQ(std::isfinite(phong.depth[i]), std::isfinite(gouraud.depth[i]));
+        if (!std::isfinite(phong.depth[i])) continue;
+        ++n;
+        expectNear(phong.color[i], glm::dvec3(expected));
+        expectNear(gouraud.color[i], glm::dvec3(expected));
+    }
+    EXPECT_GT(n, 1000);
+}
+
+TEST(Reference, PhongShowsTheHighlightGouraudMisses) {
+    // A coarse white sphere lit from the eye with a sharp highlight: no vertex sits where the
+    // highlight peaks, so Gouraud stays dim there while Phong reaches full white.
+    facet::Mesh sphere = facet::makeUvSphere(7, 10);
+    sphere.colors.clear();
+    facet::Scene scene = sceneWith(sphere, 64, 100.0);
+    scene.light = {{0.0, 0.0, -5.0, 1.0}, 1.0};
+    scene.material = {0.1, 0.4, 0.8, 60.0};
+    const Image gouraud = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud));
+    const Image phong = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong));
+    double maxGouraud = 0.0, maxPhong = 0.0;
+    for (std::size_t i = 0; i < phong.color.size(); ++i) {
+        if (!std::isfinite(phong.depth[i])) continue;
+        ASSERT_FALSE(std::isnan(phong.color[i].r));
+        maxGouraud = std::max(maxGouraud, gouraud.color[i].r);
+        maxPhong = std::max(maxPhong, phong.color[i].r);
+    }
+    EXPECT_GT(maxPhong, 0.99);
+    EXPECT_LT(maxGouraud, maxPhong - 0.3);
+
+    // Points take their vertex's own position and normal: Phong is Gouraud there.
+    const Image gouraudPoints =
+        facet::reference::render(scene, lit(DrawMode::Vertices, Lighting::Gouraud));
+    const Image phongPoints =
+        facet::reference::render(scene, lit(DrawMode::Vertices, Lighting::Phong));
+    int drawn = 0;
+    for (std::size_t i = 0; i < phongPoints.color.size(); ++i) {
+        drawn += std::isfinite(phongPoints.depth[i]) ? 1 : 0;
+        EXPECT_EQ(phongPoints.color[i], gouraudPoints.color[i]);
+    }
+    EXPECT_GT(drawn, 300);
+}
+
+TEST(Reference, PhongWithZeroNormalsIsAmbientOnly) {
+    const std::vector<glm::dvec3> rgb(3, {1.0, 0.5, 0.25});
+    const std::vector<glm::dvec3> origin(3, glm::dvec3(0.0));
+    Input input;
+    input.colors = rgb;
+    input.positions = origin;
+    input.lighting.ambient = 0.5;
+    input.lighting.light = {{0.0, 0.0, -3.0, 1.0}, 1.0};
+    input.lighting.material = {0.4, 1.0, 1.0, 0.0};
+    input.eye = {0.0, 0.0, -3.0};
+    const glm::dvec3 ambientOnly{0.2, 0.1, 0.05};  // rgb · Ia·Ka
+
+    // A triangle whose normals are all zero (no normals stream at all).
+    const std::vector<glm::dvec4> tri{screen(1, 1), screen(15, 1), screen(1, 15)};
+    const std::vector<std::uint32_t> triIdx{0, 1, 2};
+    input.clip = tri;
+    input.indices = triIdx;
+    const Image img = draw(input, lit(DrawMode::Solid, Lighting::Phong), 16, 16);
+    EXPECT_GT(coveredCount(img), 80);
+    for (std::size_t i = 0; i < img.color.size(); ++i) {
+        if (std::isfinite(img.depth[i])) expectNear(img.color[i], ambientOnly);
+    }
+
+    // A line whose end normals are opposite: they cancel exactly halfway (k = 4 of 8).
+    const std::vector<glm::dvec4> line{screen(2.5, 4.5), screen(10.5, 4.5)};
+    const std::vector<glm::dvec3> normals{{0.0, 0.0, -1.0}, {0.0, 0.0, 1.0}};
+    const std::vector<std::uint32_t> lineIdx{0, 1, 1};
+    input.clip = line;
+    input.normals = normals;
+    input.indices = lineIdx;
+    const Image wire = draw(input, lit(DrawMode::Wireframe, Lighting::Phong), 16, 16);
+    expectNear(colorAt(wire, 6, 4), ambientOnly);
+    EXPECT_EQ(colorAt(wire, 2, 4), glm::dvec3(1.0, 1.0, 0.55));  // lit: I = 0.2 + 1 + 1
+}
+
+// An 8×8 texture whose 64 texels all differ.
+std::shared_ptr<const facet::Texture> gridTexture() {
+    std::vector<std::uint32_t> px;
+    for (std::uint32_t j = 0; j < 8; ++j) {
+        for (std::uint32_t i = 0; i < 8; ++i) px.push_back(facet::packRgba(i * 32, j * 32, 200));
+    }
+    auto tex = facet::Texture::fromRgba(8, 8, std::move(px), "grid");
+    EXPECT_TRUE(tex.ok());
+    return std::make_shared<const facet::Texture>(std::move(tex.value()));
+}
+
+// The screen square [0, 8]² at w = 1 with uv = pixel / 8 + offset: pixel (i, j) samples at
+// ((i + ½)/8, (j + ½)/8) + offset, the centre of texel (i, j) without offset.
+Image drawTexturedSquare(const RenderSettings& s, const facet::Texture* tex,
+                         glm::dvec2 offset = {0, 0}, const std::vector<glm::dvec3>& colors = {}) {
+    const std::vector<glm::dvec4> clip{screen(0, 0), screen(8, 0), screen(8, 8), screen(0, 8)};
+    const std::vector<glm::dvec2> uvs{offset, offset + glm::dvec2(1, 0), offset + glm::dvec2(1, 1),
+                                      offset + glm::dvec2(0, 1)};
+    const std::vector<std::uint32_t> idx{0, 1, 2, 0, 2, 3};
+    Input input;
+    input.clip = clip;
+    input.uvs = uvs;
+    input.colors = colors;
+    input.indices = idx;
+    input.texture = tex;
+    return draw(input, s, 8, 8);
+}
+
+RenderSettings textured(facet::TextureFilter filter, bool combine = false) {
+    RenderSettings s = settingsFor(DrawMode::Solid, ShaderKind::Texture);
+    s.filter = filter;
+    s.combine = combine;
+    return s;
+}
+
+TEST(Reference, TextureShaderReproducesTexels) {
+    const auto tex = gridTexture();
+    const Image nearest = drawTexturedSquare(textured(facet::TextureFilter::Nearest), tex.get());
+    const Image bilinear = drawTexturedSquare(textured(facet::TextureFilter::Bilinear), tex.get());
+    for (int j = 0; j < 8; ++j) {
+        for (int i = 0; i < 8; ++i) {
+            const glm::dvec3 texel = facet::reference::texelColor(tex->level(0), i, j);
+            EXPECT_EQ(colorAt(nearest, i, j), texel) << i << "," << j;
+            expectNear(colorAt(bilinear, i, j), texel);
+            // Texel centres are far from texel borders: only the diagonal (rule 8(a)) is flagged.
+            EXPECT_EQ(nearest.ambiguous[static_cast<std::size_t>(j * 8 + i)], i == j ? 1 : 0);
+        }
+    }
+    // Half a texel over, every Nearest lookup sits on a texel border: rule 8(d) flags them all.
+    for (const glm::dvec2 offset : {glm::dvec2(-1.0 / 16, 0), glm::dvec2(0, 1.0 / 16)}) {
+        const Image border =
+            drawTexturedSquare(textured(facet::TextureFilter::Nearest), tex.get(), offset);
+        for (const std::uint8_t a : border.ambiguous) EXPECT_EQ(a, 1);
+    }
+    const Image smooth =
+        drawTexturedSquare(textured(facet::TextureFilter::Bilinear), tex.get(), {-1.0 / 16, 0});
+    EXPECT_EQ(smooth.ambiguous[1 * 8 + 5], 0);
+
+    // A vertex square samples at the vertex's uv (texel (2, 5)).
+    const std::vector<glm::dvec4> point{screen(4.5, 4.5)};
+    const std::vector<glm::dvec2> uv{{0.3, 0.7}};
+    Input input;
+    input.clip = point;
+    input.uvs = uv;
+    input.texture = tex.get();
+    RenderSettings s = textured(facet::TextureFilter::Nearest);
+    s.mode = DrawMode::Vertices;
+    const Image img = draw(input, s, 8, 8);
+    EXPECT_EQ(colorAt(img, 2, 2), facet::reference::texelColor(tex->level(0), 2, 5));
+    EXPECT_EQ(colorAt(img, 6, 6), facet::reference::texelColor(tex->level(0), 2, 5));
+}
+
+TEST(Reference, TextureCombineNullTextureAndLighting) {
+    const auto tex = gridTexture();
+    const std::vector<glm::dvec3> rgb(4, {0.5, 1.0, 0.25});
+    const Image combined =
+        drawTexturedSquare(textured(facet::TextureFilter::Nearest, true), tex.get(), {0, 0}, rgb);
+    // Without combine the colours and the lighting do not matter (Phong, no normals here).
+    RenderSettings phong = textured(facet::TextureFilter::Nearest);
+    phong.lighting = Lighting::Phong;
+    const Image plain = drawTexturedSquare(phong, tex.get(), {0, 0}, rgb);
+    for (int j = 0; j < 8; ++j) {
+        for (int i = 0; i < 8; ++i) {
+            const glm::dvec3 texel = facet::reference::texelColor(tex->level(0), i, j);
+            expectNear(colorAt(combined, i, j), texel * glm::dvec3(0.5, 1.0, 0.25));
+            EXPECT_EQ(colorAt(plain, i, j), texel);
+        }
+    }
+    // No texture: white, and with combine the vertex colour.
+    const Image white =
+        drawTexturedSquare(textured(facet::TextureFilter::Nearest), nullptr, {0, 0}, rgb);
+    const Image tinted =
+        drawTexturedSquare(textured(facet::TextureFilter::Trilinear, true), nullptr, {0, 0}, rgb);
+    EXPECT_EQ(colorAt(white, 3, 4), glm::dvec3(1.0));
+    EXPECT_EQ(colorAt(tinted, 3, 4), glm::dvec3(0.5, 1.0, 0.25));
+}
+
+TEST(Reference, SubdividedIsExactEveryNPixelsAndLinearBetween) {
+    // A wall X = Z - 4 seen with f = 16 from the origin: its horizon is the column x = 48, the
+    // triangle spans x in [32, 46.4]. With N = 8, pixels 32…39 blend the exact weights at
+    // columns 32 and 40; for pixels 40…47 the column x1 = 48 is past the horizon (q < 0 there),
+    // so they take their exact (perspective) weights.
+    constexpr double f = 16.0, c = 32.0;
+    const std::vector<glm::dvec4> v{camera(0, -2, 4, f, c, c), camera(0, 2, 4, f, c, c),
+                                    camera(36, 0, 40, f, c, c)};
+    const std::vector<glm::dvec3> col{{1, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    RenderSettings s = settingsFor(DrawMode::Solid, ShaderKind::Painter, Interp::Subdivided);
+    s.subdivision = 8;
+    const Image sub = drawClip(v, {0, 1, 2}, s, 64, 64, col);
+    const Image persp = drawClip(v, {0, 1, 2}, settingsFor(DrawMode::Solid), 64, 64, col);
+    double maxDiff = 0.0;
+    int blended = 0;
+    for (int y = 0; y < 64; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y * 64 + x);
+            ASSERT_EQ(sub.depth[i], persp.depth[i]);  // depth is perspective-correct in both
+            if (!std::isfinite(sub.depth[i])) continue;
+            if (x % 8 == 0 || x >= 40) {
+                EXPECT_EQ(sub.color[i], persp.color[i]) << x << "," << y;
+                continue;
+            }
+            maxDiff = std::max(maxDiff, std::abs(sub.color[i].g - persp.color[i].g));
+            if (!covered(persp, 32, y) || !covered(persp, 40, y)) continue;
+            ++blended;
+            const double t = (x - 32) / 8.0;
+            expectNear(sub.color[i], (1 - t) * colorAt(persp, 32, y) + t * colorAt(persp, 40, y));
+        }
+    }
+    EXPECT_GT(blended, 30);
+    EXPECT_GT(maxDiff, 1e-3);
+
+    // Lines treat Subdivided as Perspective.
+    s.mode = DrawMode::Wireframe;
+    const Image subLines = drawClip(v, {0, 1, 2}, s, 64, 64, col);
+    const Image perspLines = drawClip(v, {0, 1, 2}, settingsFor(DrawMode::Wireframe), 64, 64, col);
+    EXPECT_EQ(subLines.color, perspLines.color);
+    const Image affineLines = drawClip(
+        v, {0, 1, 2}, settingsFor(DrawMode::Wireframe, ShaderKind::Painter, Interp::Affine), 64, 64,
+        col);
+    EXPECT_NE(affineLines.color, perspLines.color);
+
+    // At constant w all three interpolations agree.
+    const std::vector<glm::dvec4> flat{{3, 3, 3, 3}, {60, 15, 3, 3}, {21, 57, 3, 3}};
+    s.mode = DrawMode::Solid;
+    s.subdivision = 5;
+    const Image a = drawClip(flat, {0, 1, 2}, s, 24, 24, col);
+    const Image b = drawClip(flat, {0, 1, 2}, settingsFor(DrawMode::Solid), 24, 24, col);
+    const Image d =
+        drawClip(flat, {0, 1, 2}, settingsFor(DrawMode::Solid, ShaderKind::Painter, Interp::Affine),
+                 24, 24, col);
+    EXPECT_GT(coveredCount(a), 100);
+    for (std::size_t i = 0; i < a.color.size(); ++i) {
+        expectNear(a.color[i], b.color[i]);
+        expectNear(a.color[i], d.color[i]);
+    }
+}
+
+TEST(Reference, TrilinearPicksHigherLevelsFartherAway) {
+    // A 64×64 checkerboard of single texels: level 0 alternates black and white, every level
+    // above is one uniform grey.
+    std::vector<std::uint32_t> px;
+    for (int j = 0; j < 64; ++j) {
+        for (int i = 0; i < 64; ++i) px.push_back((i + j) % 2 ? 0xFFFFFFFFu : 0xFF000000u);
+    }
+    auto loaded = facet::Texture::fromRgba(64, 64, std::move(px), "checker");
+    ASSERT_TRUE(loaded.ok());
+    const facet::Texture& tex = loaded.value();
+    const glm::dvec3 grey = facet::reference::texelColor(tex.level(1), 0, 0);
+    ASSERT_EQ(grey, facet::reference::texelColor(tex.level(1), 1, 0));
+    ASSERT_EQ(grey, facet::reference::texelColor(tex.level(tex.levelCount() - 1), 0, 0));
+
+    // A floor Y = 1 from Z = 1 (the bottom row) to Z = 64 (row 32), uv repeating 4 times.
+    // Texels per pixel grow from about 0.5 at the bottom past 2 above row 40.
+    constexpr double f = 32.0, c = 32.0;
+    const std::vector<glm::dvec4> clip{camera(-8, 1, 1, f, c, c), camera(8, 1, 1, f, c, c),
+                                       camera(8, 1, 64, f, c, c), camera(-8, 1, 64, f, c, c)};
+    const std::vector<glm::dvec2> uvs{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+    const std::vector<std::uint32_t> idx{0, 1, 2, 0, 2, 3};
+    Input input;
+    input.clip = clip;
+    input.uvs = uvs;
+    input.indices = idx;
+    input.texture = &tex;
+    const Image tri = draw(input, textured(facet::TextureFilter::Trilinear), 64, 64);
+    const Image bi = draw(input, textured(facet::TextureFilter::Bilinear), 64, 64);
+    int far = 0, near = 0, sharp = 0;
+    double farAliasing = 0.0;
+    for (int y = 0; y < 64; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            if (!covered(tri, x, y)) continue;
+            if (y <= 39) {  // level >= 1: the uniform grey, where bilinear aliases
+                ++far;
+                expectNear(colorAt(tri, x, y), grey);
+                farAliasing = std::max(farAliasing, std::abs(colorAt(bi, x, y).r - grey.r));
+            } else if (y >= 56) {  // magnified: level 0 only, the sharp checkerboard
+                ++near;
+                EXPECT_EQ(colorAt(tri, x, y), colorAt(bi, x, y)) << x << "," << y;
+                sharp += std::abs(colorAt(tri, x, y).r - 0.5) > 0.05 ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(far, 100);
+    EXPECT_GT(near, 400);
+    EXPECT_GT(sharp, near / 4);
+    EXPECT_GT(farAliasing, 0.1);
+}
+
+// A floor triangle seen edge-on (normals +Y, so each normal is a vertical segment going up on
+// screen) and a blue wall at z = -2 in front of the first vertex. Image 65×65, f = 100: vertex
+// (0,0,0) is at (32.5, 32.5), its segment of length 0.2 ends at y = 28.5; vertex (1,0,0) is at
+// x = 12.5, y 32.5 → 28.5; vertex (-1,0,1) at x = 49.17, y 32.5 → 29.17.
+facet::Mesh floorAndWall(bool wall) {
+    facet::Mesh mesh;
+    mesh.positions = {{0.0f, 0.0f, 0.0f}, {-1.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f}};
+    mesh.indices = {0, 1, 2};
+    mesh.colors = {glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)};
+    if (wall) {
+        mesh.positions.insert(mesh.positions.end(),
+                              {{-0.3f, -0.3f, -2.0f}, {0.3f, -0.3f, -2.0f}, {0.0f, 0.6f, -2.0f}});
+        mesh.indices.insert(mesh.indices.end(), {3, 4, 5});
+        mesh.colors.insert(mesh.colors.end(), 3, glm::vec3(0.0f, 0.0f, 1.0f));
+    }
+    return mesh;
+}
+
+bool isRed(const Image& img, int x, int y) {
+    return colorAt(img, x, y) == glm::dvec3(1.0, 0.0, 0.0);
+}
+
+TEST(Reference, NormalsDisplayDrawsRedSegments) {
+    RenderSettings s = settingsFor(DrawMode::Solid);
+    s.showNormals = true;
+    s.normalLength = 0.2;
+    const facet::Scene alone = sceneWith(floorAndWall(false), 65, 100.0);
+    const Image img = facet::reference::render(alone, s);
+    int red = 0;
+    for (int y = 0; y < 65; ++y) {
+        for (int x = 0; x < 65; ++x) red += isRed(img, x, y) ? 1 : 0;
+    }
+    EXPECT_EQ(red, 14);
+    for (int y = 28; y <= 32; ++y) {
+        EXPECT_TRUE(isRed(img, 32, y)) << y;
+        EXPECT_TRUE(isRed(img, 12, y)) << y;
+        EXPECT_EQ(isRed(img, 49, y), y >= 29) << y;
+    }
+    s.showNormals = false;
+    EXPECT_EQ(coveredCount(facet::reference::render(alone, s)), 0);  // the floor is edge-on
+
+    // Behind the wall the LESS test hides the segment; Simple draws it over; other segments
+    // stay red, also after the Depth shader's mapping and in the other draw modes.
+    s.showNormals = true;
+    const facet::Scene scene = sceneWith(floorAndWall(true), 65, 100.0);
+    const Image painter = facet::reference::render(scene, s);
+    for (int y = 28; y <= 32; ++y) {
+        expectNear(colorAt(painter, 32, y), glm::dvec3(0.0, 0.0, 1.0));
+        EXPECT_TRUE(isRed(painter, 12, y)) << y;
+    }
+    for (const ShaderKind shader : {ShaderKind::Simple, ShaderKind::Depth}) {
+        s.shader = shader;
+        const Image img2 = facet::reference::render(scene, s);
+        EXPECT_EQ(isRed(img2, 32, 30), shader == ShaderKind::Simple);
+        EXPECT_TRUE(isRed(img2, 12, 30));
+        // The Depth shader mapped the wall (blue before) to viridis.
+        if (shader == ShaderKind::Depth) {
+            EXPECT_GT(glm::length(colorAt(img2, 32, 30) - glm::dvec3(0, 0, 1)), 0.1);
+        }
+    }
+    s.shader = ShaderKind::Painter;
+    for (const DrawMode mode : {DrawMode::Wireframe, DrawMode::Vertices}) {
+        s.mode = mode;
+        const Image img2 = facet::reference::render(scene, s);
+        EXPECT_TRUE(isRed(img2, 12, 28));
+        EXPECT_TRUE(isRed(img2, 12, 29));
+    }
+
+    // The default length is normalDisplayLength; vertices without a normal get no segment.
+    facet::Mesh mesh = floorAndWall(false);
+    mesh.positions.push_back({5.0f, 5.0f, 5.0f});
+    mesh.colors.push_back(glm::vec3(1.0f));
+    const facet::Scene withLoose = sceneWith(mesh, 65, 100.0);
+    s.normalLength = 0.0;
+    const std::vector<glm::dvec4> ends = facet::reference::projectNormals(withLoose, s);
+    ASSERT_EQ(ends.size(), 6u);
+    const double length = static_cast<double>(facet::normalDisplayLength(mesh));
+    EXPECT_EQ(ends[0], facet::reference::projectPoint(withLoose.camera, {0.0, 0.0, 0.0}));
+    EXPECT_EQ(ends[1], facet::reference::projectPoint(withLoose.camera, {0.0, length, 0.0}));
 }
 
 }  // namespace

@@ -1,37 +1,76 @@
-// The reference path: the executable specification of a correct image (conventions §4, §5, §8).
+// The reference path: the executable specification of a correct image (conventions §4 to §8).
 //
 // Everything is double precision and written the obvious way: per triangle, every pixel of its
 // bounding box is tested; per line, every pixel is computed from a closed formula. It is slow on
 // purpose and must stay readable: the fast path (pipeline.cpp) implements exactly the rules
 // below with fixed point, tiles and templates, and is tested against this file.
 //
+// This file is the geometry: projection, clipping, coverage, lines, points and draw().
+// reference_shading.cpp is the colour: render() (the vertex streams of a scene), interpolation
+// weights, lighting, texturing and the depth rule, per fragment.
+//
 // THE RULES (numbered as in the tests and the fast path)
 //  1. Projection (conventions §4): camera frame z = normalize(look - eye), x = normalize(up × z),
 //     y = z × x; p_c = R (p - eye) with R's rows x, y, z. Clip space is homogeneous pixel space:
 //     (f·X + w/2·Z, f·Y + h/2·Z, Z, Z), so pixel = clip.xy / clip.w and clip.w is the depth Z.
 //  2. The image starts as the background (0xRRGGBB, byte/255 per channel), depth +inf.
-//  3. Vertex colours are the mesh colours, or white when there are none.
+//  3. Vertex colours are the mesh colours, or white when there are none; for Gouraud lighting
+//     they are replaced by the lit colours shade(rgb, I(p_i, n_i)) (conventions §6).
 //  4. Solid: triangles in index order, clipped against w >= near (Sutherland–Hodgman, new
 //     vertices computed from the inside vertex), fanned (v0, vk, vk+1), then rasterized with the
-//     top-left rule at pixel centres; depth is always perspective-correct, colour affine or
-//     perspective-correct.
+//     top-left rule at pixel centres; depth is always 1/q, perspective-correct (q = Σ λ_i/w_i),
+//     the varyings use the weights of rule 11.
 //  5. Shaders: Simple writes colour only (last wins); Painter tests LESS and writes colour and
-//     depth; Depth is Painter, then maps every drawn pixel's depth to viridis over [dmin, dmax].
+//     depth; Depth is Painter, then maps every drawn pixel's depth to viridis over [dmin, dmax];
+//     Texture is Painter with the colour of rule 13.
 //  6. Wireframe: sorted unique edges, clipped against w >= near, Bresenham as a closed formula,
-//     endpoints included, attributes interpolated by the major-axis step.
+//     endpoints included, attributes interpolated by the major-axis step: t = k/n, weights of
+//     rule 11; depth perspective-correct along the segment.
 //  7. Vertices: squares of pointSize pixels around floor(pixel position) of each vertex in front
-//     of the near plane.
+//     of the near plane, every pixel with the vertex's own depth and varyings.
 //  8. Ambiguity: pixels where a correct fast path (1/256 px snapping, float arithmetic) may
 //     legitimately differ are flagged in Image::ambiguous: (a) pixel centres within 1/256 px of
 //     a drawn triangle's edge and not clearly outside it; (b) depth tests between depths within
 //     a relative 1e-5; (c) for a line endpoint or point within 1/256 px of a pixel border, every
-//     pixel the line or square would cover with either rounding of that coordinate.
+//     pixel the line or square would cover with either rounding of that coordinate; (d) with
+//     the Texture shader, the Nearest filter and a texture, a written fragment whose wrapped
+//     texel coordinate u'·W or v'·H is within 1/256 texel of an integer (a texel border,
+//     0 and W included). The Subdivided fallback of rule 11 is deterministic, not flagged.
 //  9. toRgba: clamp, round to nearest, pack like facet::packRgba.
+// 10. Varyings, per vertex: rgb (rule 3), uv (the mesh's, else (0, 0)), world normal n (from
+//     computeVertexNormals, unit or zero), world position p. Near clipping interpolates all of
+//     them with the position's t, from the inside vertex.
+// 11. Interpolation weights, computed once per fragment and applied to every varying (never to
+//     depth):
+//     - triangles, Affine: the screen-space barycentrics λ at the pixel centre;
+//     - triangles, Perspective: λ'_i = (λ_i / w_i) / q, q = Σ λ_j / w_j;
+//     - triangles, Subdivided N (settings.subdivision clamped to 2…256): for pixel (x, y),
+//       x0 = N·floor(x/N), x1 = x0 + N, t = (x − x0)/N; weights = (1−t)·λ'(x0+½, y+½) +
+//       t·λ'(x1+½, y+½), both λ' from the triangle's plane equations even outside it. If q at
+//       either of those centres is not a finite number > 0, the pixel's own λ' instead;
+//     - lines at t = k/n: Affine (1−t, t); Perspective and Subdivided ((1−t)/w_a, t/w_b) / q
+//       with q = (1−t)/w_a + t/w_b;
+//     - points: the vertex's own values.
+// 12. Colour before texturing, c: Lighting Off or Gouraud: the interpolated rgb. Phong: n' =
+//     the interpolated n normalised (|n| = 0 stays 0, never NaN), I = lightIntensity(p, n',
+//     eye, params) with the interpolated p, c = shade(rgb, I). Points use their vertex's own
+//     p and n as they are (no renormalisation), so Phong equals Gouraud there exactly.
+// 13. Texture shader: texel = the texture at the interpolated uv (a null texture is white):
+//     Nearest: reference::sampleNearest; Bilinear: reference::sampleBilinear on level 0;
+//     Trilinear: reference::sampleTrilinear at lod = reference::mipLevel(du/dx, dv/dx, du/dy,
+//     dv/dy). Triangles use the exact screen-space derivatives at the pixel centre: Affine, the
+//     constant gradient of the affine uv; Perspective and Subdivided, the derivative of the
+//     perspective-correct uv, d(uv) = (d(Σ λ_i uv_i / w_i) − uv_p·dq) / q with uv_p the
+//     perspective-correct uv at the centre. Lines and points use lod 0. The colour is the
+//     texel, or texel × c (rule 12) with settings.combine.
+// 14. Normals display (settings.showNormals), after the main pass and after the Depth shader's
+//     mapping, in every draw mode: for each vertex with a non-zero normal, the segment p_i to
+//     p_i + L·n_i (L = settings.normalLength if > 0, else normalDisplayLength(mesh); n_i and
+//     that length are the float values widened, the sum is formed in double), both ends
+//     projected by rule 1, drawn by rule 6 (with 8(b) and 8(c)) in pure red (1, 0, 0). Depth
+//     rule: the Simple shader overwrites, every other shader tests LESS and writes depth.
 
 #include "facet/reference.hpp"
-
-#include "facet/lighting.hpp"
-#include "facet/normals.hpp"
 
 #include <algorithm>
 #include <array>
@@ -39,33 +78,34 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "facet/colormap.hpp"
-#include "facet/framebuffer.hpp"
-#include "facet/render.hpp"
+#include "facet/texture.hpp"
+#include "reference_shading.hpp"
 
 namespace facet::reference {
 namespace {
+
+using detail::edgeFunction;
+using detail::fragment;
+using detail::mapDepthToColor;
+using detail::Pass;
+using detail::pixelIndex;
+using detail::ScreenTriangle;
+using detail::Vertex;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // The fast path snaps screen positions to a 1/256 px grid; any decision closer than that to a
 // boundary may go either way there (rule 8).
 constexpr double kSnap = 1.0 / 256.0;
-// The fast path keeps float depths; LESS between nearly equal depths is a coin toss there.
-constexpr double kDepthMargin = 1e-5;
 // Line endpoints farther out than this are beyond any image and would overflow the int64
 // Bresenham arithmetic (2·k·dminor); such segments are not drawn. No sane scene gets near it.
 constexpr double kMaxLineCoord = 536870912.0;  // 2^29
-
-struct Vertex {
-    glm::dvec4 clip;
-    glm::dvec3 color;
-};
 
 // A triangle clipped by one plane has at most four vertices.
 struct Polygon {
@@ -73,39 +113,20 @@ struct Polygon {
     std::size_t count = 0;
 };
 
-std::size_t pixelIndex(const Image& img, std::int64_t x, std::int64_t y) {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) +
-           static_cast<std::size_t>(x);
+// Entry i of a per-vertex stream, or the default when the stream is empty or too short.
+template <typename T>
+T streamAt(std::span<const T> stream, std::size_t i, const T& fallback) {
+    return i < stream.size() ? stream[i] : fallback;
 }
 
 bool inImage(const Image& img, std::int64_t x, std::int64_t y) {
     return x >= 0 && y >= 0 && x < img.width && y < img.height;
 }
 
-// One fragment through the shader (rule 5). Depth for the Depth shader is mapped at the end.
-void shade(Image& img, ShaderKind shader, std::int64_t x, std::int64_t y, double depth,
-           const glm::dvec3& color) {
-    const std::size_t i = pixelIndex(img, x, y);
-    if (shader == ShaderKind::Simple) {
-        img.color[i] = color;
-        return;
-    }
-    const double old = img.depth[i];
-    // Rule 8(b): a float depth test may order two nearly equal depths the other way.
-    if (std::isfinite(old) && std::abs(depth - old) <= kDepthMargin * std::max(depth, old)) {
-        img.ambiguous[i] = 1;
-    }
-    if (depth < old) {  // LESS: on a tie the first drawn stays
-        img.color[i] = color;
-        img.depth[i] = depth;
-    }
-}
-
 // Point where the segment inside→outside meets w = near. Always computed from the inside vertex
 // so the fast path, doing the same, gets the same point whichever way the edge is walked.
 Vertex intersectNear(const Vertex& in, double dIn, const Vertex& out, double dOut) {
-    const double t = dIn / (dIn - dOut);
-    return {in.clip + t * (out.clip - in.clip), in.color + t * (out.color - in.color)};
+    return detail::lerp(in, out, dIn / (dIn - dOut));
 }
 
 // Sutherland–Hodgman against w >= near, walking edges v0→v1, v1→v2, v2→v0: an inside start
@@ -127,11 +148,6 @@ Polygon clipNear(const std::array<Vertex, 3>& tri, double nearPlane) {
         }
     }
     return poly;
-}
-
-// E_ab(p): twice the signed area of (a, b, p); positive on the inside of a triangle with A > 0.
-double edgeFunction(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
-    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
 // Top-left rule for A > 0 on a y-down screen: a top edge runs exactly horizontal towards +x, a
@@ -177,7 +193,8 @@ void markEdgeAmbiguity(Image& img, const std::array<glm::dvec2, 3>& s) {
 }
 
 // Rule 4 for one fan triangle in clip space.
-void rasterizeTriangle(Image& img, const RenderSettings& settings, std::array<Vertex, 3> v) {
+void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v) {
+    const RenderSettings& settings = pass.settings;
     std::array<glm::dvec2, 3> s{};
     for (std::size_t i = 0; i < 3; ++i) s[i] = glm::dvec2(v[i].clip) / v[i].clip.w;
     double area = edgeFunction(s[0], s[1], s[2]);
@@ -190,6 +207,8 @@ void rasterizeTriangle(Image& img, const RenderSettings& settings, std::array<Ve
         area = -area;
     }
     markEdgeAmbiguity(img, s);
+    const ScreenTriangle tri{s, {v[0].clip.w, v[1].clip.w, v[2].clip.w}, area};
+    const bool withLod = detail::needsLod(settings, pass.input);
 
     const std::array<bool, 3> topLeft{isTopLeft(s[1], s[2]), isTopLeft(s[2], s[0]),
                                       isTopLeft(s[0], s[1])};
@@ -209,17 +228,14 @@ void rasterizeTriangle(Image& img, const RenderSettings& settings, std::array<Ve
             }
             if (!covered) continue;
 
-            double q = 0.0;  // interpolated 1/w: affine in screen space
-            glm::dvec3 affine{0.0};
-            glm::dvec3 overW{0.0};
-            for (std::size_t k = 0; k < 3; ++k) {
-                const double lambda = e[k] / area;
-                q += lambda / v[k].clip.w;
-                affine += lambda * v[k].color;
-                overW += (lambda / v[k].clip.w) * v[k].color;
+            const double depth = 1.0 / tri.inverseW(p);  // always perspective-correct
+            const std::array<double, 3> weights = detail::triangleWeights(tri, settings, x, y);
+            double lod = 0.0;
+            if (withLod) {
+                const auto [dx, dy] = detail::uvDerivatives(tri, v, settings.interp, p);
+                lod = reference::mipLevel(*pass.input.texture, dx, dy);
             }
-            const glm::dvec3 color = settings.interp == Interp::Affine ? affine : overW / q;
-            shade(img, settings.shader, x, y, 1.0 / q, color);
+            fragment(img, pass, x, y, depth, v, weights, lod);
         }
     }
 }
@@ -274,8 +290,8 @@ std::vector<LinePixel> linePixels(const Image& img, std::int64_t x0, std::int64_
     return pixels;
 }
 
-// Rule 6 for one segment in clip space.
-void drawSegment(Image& img, const RenderSettings& settings, Vertex a, Vertex b, double nearPlane) {
+// Rule 6 for one segment in clip space (also the normals display, rule 14).
+void drawSegment(Image& img, const Pass& pass, Vertex a, Vertex b, double nearPlane) {
     const double da = a.clip.w - nearPlane;
     const double db = b.clip.w - nearPlane;
     if (!(da >= 0.0) && !(db >= 0.0)) return;
@@ -293,15 +309,14 @@ void drawSegment(Image& img, const RenderSettings& settings, Vertex a, Vertex b,
         img, static_cast<std::int64_t>(std::floor(s0.x)),
         static_cast<std::int64_t>(std::floor(s0.y)), static_cast<std::int64_t>(std::floor(s1.x)),
         static_cast<std::int64_t>(std::floor(s1.y)), n);
+    const std::array<Vertex, 2> ends{a, b};
     for (const LinePixel& p : pixels) {
         // Attributes at t = k/n along the line, the same for steep and shallow lines.
         const double t = n == 0 ? 0.0 : static_cast<double>(p.k) / static_cast<double>(n);
         const double q = (1.0 - t) / a.clip.w + t / b.clip.w;
-        const glm::dvec3 color =
-            settings.interp == Interp::Affine
-                ? (1.0 - t) * a.color + t * b.color
-                : ((1.0 - t) / a.clip.w * a.color + t / b.clip.w * b.color) / q;
-        shade(img, settings.shader, p.x, p.y, 1.0 / q, color);
+        const std::array<double, 2> weights =
+            detail::lineWeights(t, a.clip.w, b.clip.w, pass.settings.interp);
+        fragment(img, pass, p.x, p.y, 1.0 / q, ends, weights, 0.0);
     }
 
     // Rule 8(c): an endpoint within 1/256 px of a pixel border may land in either pixel, which
@@ -324,19 +339,20 @@ void drawSegment(Image& img, const RenderSettings& settings, Vertex a, Vertex b,
     }
 }
 
-// Rule 7: one square per vertex.
-void drawPoint(Image& img, const RenderSettings& settings, const Vertex& v, double nearPlane) {
+// Rule 7: one square per vertex, every pixel with the vertex's own values.
+void drawPoint(Image& img, const Pass& pass, const Vertex& v, double nearPlane) {
     if (!(v.clip.w >= nearPlane)) return;
     const glm::dvec2 s = glm::dvec2(v.clip) / v.clip.w;
     if (!(std::abs(s.x) < kMaxLineCoord && std::abs(s.y) < kMaxLineCoord)) return;
     const auto px = static_cast<std::int64_t>(std::floor(s.x));
     const auto py = static_cast<std::int64_t>(std::floor(s.y));
     // Odd sizes are centred; even sizes put the extra pixel on the +x/+y side.
-    const std::int64_t lo = -(static_cast<std::int64_t>(settings.pointSize) - 1) / 2;
-    const std::int64_t hi = lo + settings.pointSize - 1;
+    const std::int64_t lo = -(static_cast<std::int64_t>(pass.settings.pointSize) - 1) / 2;
+    const std::int64_t hi = lo + pass.settings.pointSize - 1;
+    const std::array<double, 1> own{1.0};
     for (std::int64_t y = py + lo; y <= py + hi; ++y) {
         for (std::int64_t x = px + lo; x <= px + hi; ++x) {
-            if (inImage(img, x, y)) shade(img, settings.shader, x, y, v.clip.w, v.color);
+            if (inImage(img, x, y)) fragment(img, pass, x, y, v.clip.w, {&v, 1}, own, 0.0);
         }
     }
     // Rule 8(c): near a pixel border the square may sit one pixel over; flag both positions.
@@ -349,76 +365,26 @@ void drawPoint(Image& img, const RenderSettings& settings, const Vertex& v, doub
     }
 }
 
-// Rule 5, Depth shader: after everything is drawn, depth becomes colour, near dark, far bright.
-void mapDepthToColor(Image& img) {
-    double dmin = kInf;
-    double dmax = -kInf;
-    for (const double d : img.depth) {
-        if (!std::isfinite(d)) continue;
-        dmin = std::min(dmin, d);
-        dmax = std::max(dmax, d);
-    }
-    for (std::size_t i = 0; i < img.depth.size(); ++i) {
-        const double d = img.depth[i];
-        if (!std::isfinite(d)) continue;
-        const double t = dmax > dmin ? (d - dmin) / (dmax - dmin) : 0.0;
-        img.color[i] = viridis(t);
-    }
-}
-
 }  // namespace
 
-std::vector<std::uint32_t> Image::toRgba() const {
-    auto channel = [](double c) -> std::uint32_t {
-        if (std::isnan(c)) return 0;
-        return static_cast<std::uint32_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
-    };
-    std::vector<std::uint32_t> out(color.size());
-    for (std::size_t i = 0; i < color.size(); ++i) {
-        out[i] = packRgba(channel(color[i].r), channel(color[i].g), channel(color[i].b));
-    }
-    return out;
-}
-
-std::vector<glm::dvec4> projectScene(const Scene& scene) {
-    const Camera& cam = scene.camera;
+glm::dvec4 projectPoint(const Camera& cam, const glm::dvec3& world) {
     const glm::dvec3 z = glm::normalize(cam.look - cam.eye);
     const glm::dvec3 x = glm::normalize(glm::cross(cam.up, z));
     const glm::dvec3 y = glm::cross(z, x);
-    const double cx = cam.width / 2.0;
-    const double cy = cam.height / 2.0;
+    const glm::dvec3 d = world - cam.eye;
+    const glm::dvec3 pc{glm::dot(x, d), glm::dot(y, d), glm::dot(z, d)};
+    // K·p_c, with the divide by Z left to the rasterizer (and w = Z kept for depth).
+    return {cam.focal * pc.x + cam.width / 2.0 * pc.z, cam.focal * pc.y + cam.height / 2.0 * pc.z,
+            pc.z, pc.z};
+}
+
+std::vector<glm::dvec4> projectScene(const Scene& scene) {
     std::vector<glm::dvec4> clip;
     clip.reserve(scene.mesh.positions.size());
     for (const glm::vec3& position : scene.mesh.positions) {
-        const glm::dvec3 d = glm::dvec3(position) - cam.eye;
-        const glm::dvec3 pc{glm::dot(x, d), glm::dot(y, d), glm::dot(z, d)};
-        // K·p_c, with the divide by Z left to the rasterizer (and w = Z kept for depth).
-        clip.emplace_back(cam.focal * pc.x + cx * pc.z, cam.focal * pc.y + cy * pc.z, pc.z, pc.z);
+        clip.push_back(projectPoint(scene.camera, glm::dvec3(position)));
     }
     return clip;
-}
-
-Image render(const Scene& scene, const RenderSettings& settings) {
-    const std::vector<glm::dvec4> clip = projectScene(scene);
-    std::vector<glm::dvec3> colors(scene.mesh.colors.begin(), scene.mesh.colors.end());
-    if (settings.lighting == Lighting::Gouraud) {
-        // Conventions §6, per vertex: colour = clamp(rgb · I), I from the formula in double.
-        const std::vector<glm::vec3> normals = computeVertexNormals(scene.mesh);
-        const LightingParams params = lightingParams(scene);
-        colors.resize(scene.mesh.positions.size(), glm::dvec3(1.0));
-        for (std::size_t i = 0; i < colors.size(); ++i) {
-            const double intensity =
-                lightIntensity(glm::dvec3(scene.mesh.positions[i]), glm::dvec3(normals[i]),
-                               scene.camera.eye, params);
-            colors[i] = facet::shade(colors[i], intensity);
-        }
-    }
-    Input input;
-    input.clip = clip;
-    input.colors = colors;
-    input.indices = scene.mesh.indices;
-    input.nearPlane = resolveNearPlane(settings, scene.mesh);
-    return draw(input, settings, scene.camera.width, scene.camera.height);
 }
 
 Image draw(const Input& input, const RenderSettings& settings, int width, int height) {
@@ -434,13 +400,19 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
     img.ambiguous.assign(pixels, 0);
 
     const std::size_t vertexCount = input.clip.size();
-    auto vertex = [&](std::uint32_t i) {
-        const glm::dvec3 color = input.colors.empty() ? glm::dvec3{1.0} : input.colors[i];
-        return Vertex{input.clip[i], color};
+    auto vertex = [&](std::uint32_t i) {  // rule 10
+        Vertex v;
+        v.clip = input.clip[i];
+        v.color = streamAt(input.colors, i, glm::dvec3(1.0));
+        v.uv = streamAt(input.uvs, i, glm::dvec2(0.0));
+        v.normal = streamAt(input.normals, i, glm::dvec3(0.0));
+        v.world = streamAt(input.positions, i, glm::dvec3(0.0));
+        return v;
     };
     // Indices past the vertex array are ignored rather than read out of bounds.
     auto valid = [&](std::uint32_t i) { return i < vertexCount; };
 
+    const Pass pass{settings, input, false};
     switch (settings.mode) {
         case DrawMode::Solid:
             for (std::size_t t = 0; t + 2 < input.indices.size(); t += 3) {
@@ -451,7 +423,7 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
                 const Polygon poly =
                     clipNear({vertex(i0), vertex(i1), vertex(i2)}, input.nearPlane);
                 for (std::size_t k = 1; k + 1 < poly.count; ++k) {
-                    rasterizeTriangle(img, settings, {poly.v[0], poly.v[k], poly.v[k + 1]});
+                    rasterizeTriangle(img, pass, {poly.v[0], poly.v[k], poly.v[k + 1]});
                 }
             }
             break;
@@ -470,18 +442,30 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
             edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
             for (const auto& [a, b] : edges) {
                 if (!valid(a) || !valid(b)) continue;
-                drawSegment(img, settings, vertex(a), vertex(b), input.nearPlane);
+                drawSegment(img, pass, vertex(a), vertex(b), input.nearPlane);
             }
             break;
         }
         case DrawMode::Vertices:
             for (std::uint32_t i = 0; i < vertexCount; ++i) {
-                drawPoint(img, settings, vertex(i), input.nearPlane);
+                drawPoint(img, pass, vertex(i), input.nearPlane);
             }
             break;
     }
 
     if (settings.shader == ShaderKind::Depth) mapDepthToColor(img);
+
+    // Rule 14: the normals display, over the finished image.
+    if (settings.showNormals) {
+        const Pass normalsPass{settings, input, true};
+        for (std::size_t i = 0; i + 1 < input.normalSegments.size(); i += 2) {
+            Vertex a;
+            Vertex b;
+            a.clip = input.normalSegments[i];
+            b.clip = input.normalSegments[i + 1];
+            drawSegment(img, normalsPass, a, b, input.nearPlane);
+        }
+    }
     return img;
 }
 

@@ -7,9 +7,11 @@
 #include <span>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "facet/lighting.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
@@ -22,8 +24,9 @@ struct Image {
     std::vector<glm::dvec3> color;  ///< RGB in [0,1], row 0 at the top
     std::vector<double> depth;      ///< camera-space depth, +inf where nothing drew
     /// 1 where the outcome hinges on rounding: a pixel centre within 1/256 px of a triangle edge,
-    /// a depth test decided by a relative margin under 1e-5, or a line/point endpoint within
-    /// 1/256 px of a pixel border. Elsewhere a correct fast path must agree exactly.
+    /// a depth test decided by a relative margin under 1e-5, a line/point endpoint within
+    /// 1/256 px of a pixel border, or a Nearest texel lookup within 1/256 texel of a texel
+    /// border. Elsewhere a correct fast path must agree exactly.
     std::vector<std::uint8_t> ambiguous;
 
     /// 8-bit RGBA with the conventions' rounding (clamp, round to nearest), packed like
@@ -31,18 +34,37 @@ struct Image {
     std::vector<std::uint32_t> toRgba() const;
 };
 
-/// Geometry in the same homogeneous clip space as the fast path, in double.
+/// Geometry in the same homogeneous clip space as the fast path, in double. Every per-vertex
+/// stream may be empty (or short): a missing entry takes the default named below.
 struct Input {
-    std::span<const glm::dvec4> clip;
-    std::span<const glm::dvec3> colors;  ///< empty for white
-    std::span<const std::uint32_t> indices;
+    std::span<const glm::dvec4> clip;        ///< one per vertex
+    std::span<const glm::dvec3> colors;      ///< rgb, lit already for Gouraud; default white
+    std::span<const glm::dvec2> uvs;         ///< texture coordinates; default (0, 0)
+    std::span<const glm::dvec3> normals;     ///< world-space unit or zero normals; default zero
+    std::span<const glm::dvec3> positions;   ///< world-space positions (Phong); default origin
+    std::span<const std::uint32_t> indices;  ///< three per triangle
+    /// The normals display (drawn when settings.showNormals): clip-space segment ends, two per
+    /// segment (vertex, vertex + length·normal), for the vertices with a non-zero normal.
+    std::span<const glm::dvec4> normalSegments;
     double nearPlane = 1e-3;
+    const Texture* texture = nullptr;  ///< Texture shader; null samples as white
+    LightingParams lighting;           ///< Phong: the §6 parameters
+    glm::dvec3 eye{0.0};               ///< Phong: camera centre in world space
 };
 
 /// Clip-space positions of the scene's mesh, computed directly from conventions §4 in double.
 std::vector<glm::dvec4> projectScene(const Scene& scene);
 
-/// Renders the scene at the camera's size with the given settings.
+/// Clip-space position of one world-space point, by the same formula as projectScene().
+glm::dvec4 projectPoint(const Camera& camera, const glm::dvec3& world);
+
+/// The normals display's segment ends in clip space (rule 14), as render() puts them in
+/// Input::normalSegments: for each vertex with a non-zero normal, the vertex and the vertex
+/// moved along its normal by settings.normalLength (or normalDisplayLength() when <= 0).
+std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings& settings);
+
+/// Renders the scene at the camera's size with the given settings: builds every Input stream
+/// from the scene (Gouraud colours lit per vertex, normals, uvs, the normals display).
 Image render(const Scene& scene, const RenderSettings& settings);
 
 /// Draws clip-space geometry onto a background-filled image of the given size.
