@@ -274,3 +274,35 @@ TEST(Shading, LightingEditsShowInTheNextFrame) {
 }
 
 }  // namespace
+
+namespace {
+
+// The depth legend: a black box in the bottom-left corner holding the viridis bar (dark on the
+// left, bright on the right) and the two depths as white digits.
+TEST(Shading, DepthLegendShowsTheBarAndTheRange) {
+    Scene s = sceneFacing(square(), 4.0, 128.0, 400);
+    RenderSettings set;
+    set.shader = ShaderKind::Depth;
+    set.depthLegend = true;
+    facet::Renderer r;
+    Framebuffer f;
+    const facet::RenderStats st = r.render(s, set, f);
+    EXPECT_FLOAT_EQ(st.depthNear, st.depthFar);  // a square facing the camera: one depth
+    // Scale 2 at this height: margin 8, bar 12 px high starting 8 px inside the box.
+    const int barTop = f.height - 8 - (12 + 10 + 24) + 8;
+    const std::uint32_t left = f.color[f.index(16, barTop + 2)];
+    const std::uint32_t right = f.color[f.index(16 + 255, barTop + 2)];
+    EXPECT_LT(channel(left, 1), 20) << "viridis starts dark purple";
+    EXPECT_GT(channel(right, 0), 200) << "and ends bright yellow";
+    int white = 0;
+    for (int y = barTop + 12; y < f.height; ++y)
+        for (int x = 0; x < 300; ++x)
+            white += f.color[f.index(x, y)] == facet::packRgba(255, 255, 255);
+    EXPECT_GT(white, 50) << "the labels are drawn";
+    // Without the flag, no legend.
+    set.depthLegend = false;
+    r.render(s, set, f);
+    EXPECT_EQ(f.color[f.index(16, barTop + 2)], facet::rgbaFromHex(set.background));
+}
+
+}  // namespace
