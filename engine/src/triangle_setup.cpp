@@ -107,11 +107,12 @@ void drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, 
                 inGuard = inGuard && s[j].x >= guardLo.x && s[j].x <= guardHi.x &&
                           s[j].y >= guardLo.y && s[j].y <= guardHi.y;
             }
+            // Planes are built only for triangles that cover a pixel centre: most triangles of
+            // a dense mesh cover none, and the planes cost more than the coverage test.
             const double minX = std::min({s[0].x, s[1].x, s[2].x});
             const double minY = std::min({s[0].y, s[1].y, s[2].y});
             const int baseX = static_cast<int>(std::clamp(std::floor(minX), 0.0, W - 1.0));
             const int baseY = static_cast<int>(std::clamp(std::floor(minY), 0.0, H - 1.0));
-            if (!makePlanes(s, tri, count, baseX, baseY, planes)) continue;
 
             if (inGuard) {
                 const std::int64_t xs[3] = {snap(s[0].x), snap(s[1].x), snap(s[2].x)};
@@ -124,9 +125,11 @@ void drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, 
                     continue;
                 }
                 drawn = true;
-                if (!setup.box.empty()) rasterize(context, setup, planes);
+                if (!setup.box.empty() && makePlanes(s, tri, count, baseX, baseY, planes))
+                    rasterize(context, setup, planes);
                 continue;
             }
+            if (!makePlanes(s, tri, count, baseX, baseY, planes)) continue;
             // Beyond the guard band: clip the screen triangle to it for coverage only; the
             // planes above still describe the whole triangle, so interpolation is unchanged.
             clipped = true;
