@@ -20,12 +20,12 @@ $(BUILD)/build.ninja: | setup
 build: setup $(BUILD)/build.ninja
 	cmake --build $(BUILD)
 
-# Until the viewer exists, "run" renders the default scene to a PNG and says where it is.
+# Opens the viewer on the default scene (without a display: `xvfb-run -a make run`, or use
+# `facet render`; the viewer says so).
 run: build
-	@mkdir -p $(OUT)
-	$(BUILD)/app/facet render assets/default.scene -o $(OUT)/default.png --cull --stats
-	@echo "Open $(OUT)/default.png to see the default scene."
+	$(BUILD)/app/facet-view assets/default.scene
 
+# The viewer's window tests start their own virtual display (xvfb-run -a) and input (xdotool).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 2
 

@@ -1,0 +1,69 @@
+// Mouse and keyboard for the view: orbit with the left button, pan with the right or middle,
+// zoom with the wheel, the Compare divider by dragging it. Input is read from ImGui after
+// NewFrame(), when WantCaptureMouse describes this very frame: a press over a panel belongs to
+// the panel and never starts a camera drag, even if the pointer jumped there since last frame.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "viewer_app.hpp"
+
+namespace facet::view {
+namespace {
+
+/// Window pixels around the divider line that grab it.
+constexpr double kDividerGrab = 6.0;
+
+/// True when a window point is within reach of the Compare divider.
+bool overDivider(const App& app, ImVec2 mouse) {
+    if (!app.compare.enabled || app.compare.display != CompareDisplay::Split) return false;
+    if (app.view.w <= 0) return false;
+    const double x = app.view.x + app.compare.divider * app.view.w;
+    const double y = mouse.y;
+    return std::abs(mouse.x - x) <= kDividerGrab && y >= app.view.y && y < app.view.y + app.view.h;
+}
+
+}  // namespace
+
+void handleInput(App& app) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (app.keys.resetCamera) app.model.resetCamera();
+    if (app.keys.togglePanels) app.ui.showPanels = !app.ui.showPanels;
+    app.keys.resetCamera = app.keys.togglePanels = false;
+
+    if (app.drag.button < 0 && !io.WantCaptureMouse) {
+        for (int b = 0; b < 3; ++b) {
+            if (!ImGui::IsMouseClicked(b)) continue;
+            app.drag.button = b;
+            app.drag.divider = b == ImGuiMouseButton_Left && overDivider(app, io.MousePos);
+            break;
+        }
+    }
+    if (app.drag.button >= 0) {
+        // The delta first: a press, move and release between two frames still moves.
+        const double dx = io.MouseDelta.x;
+        const double dy = io.MouseDelta.y;
+        const bool moved = (dx != 0.0 || dy != 0.0) && std::isfinite(dx) && std::isfinite(dy);
+        if (moved && app.drag.divider) {
+            if (app.view.w > 0)
+                app.compare.divider = std::clamp(app.compare.divider + dx / app.view.w, 0.0, 1.0);
+        } else if (moved && app.drag.button == ImGuiMouseButton_Left) {
+            app.model.rotate(dx, dy);
+        } else if (moved) {
+            // Pan speed in frame pixels, so the scene follows the pointer at any letterbox scale.
+            const double scale = frameScale(app.view, app.model.scene.camera.width);
+            app.model.pan(dx * scale, dy * scale);
+        }
+        if (!ImGui::IsMouseDown(app.drag.button)) app.drag = {};
+    }
+    if (!io.WantCaptureMouse && io.MouseWheel != 0.0f && std::isfinite(io.MouseWheel))
+        app.model.zoom(io.MouseWheel);
+
+    // The pointer over the divider shows it can be moved.
+    if (!io.WantCaptureMouse && (app.drag.divider || overDivider(app, io.MousePos)))
+        ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+}
+
+}  // namespace facet::view

@@ -1,0 +1,46 @@
+#pragma once
+// Frame timing: each frame's time split into stages, a rolling history for the plot, and the
+// medians printed by --fps-report.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace facet::view {
+
+/// Milliseconds one frame spent in each stage.
+struct FrameTimes {
+    double render = 0.0;   ///< engine: Renderer::render (both sides in Compare)
+    double compare = 0.0;  ///< Compare: difference and composition
+    double upload = 0.0;   ///< glTexSubImage2D of the frame
+    double draw = 0.0;     ///< OpenGL drawing the frame's textured triangle (llvmpipe: CPU)
+    double ui = 0.0;       ///< ImGui: building the panels and drawing them
+    double present = 0.0;  ///< buffer swap and window events
+    double wait = 0.0;     ///< the main thread waiting for the engine (its thread)
+    double total = 0.0;    ///< start of one frame to the start of the next
+};
+
+/// Every frame's times (for medians) and the last `window` totals in order (for the plot).
+struct FrameHistory {
+    std::size_t window = 240;        ///< frames shown by the plot
+    std::size_t capacity = 100000;   ///< frames kept; beyond it the older half is dropped
+    std::vector<FrameTimes> frames;  ///< the frames kept, oldest first
+    std::size_t dropped = 0;         ///< frames dropped from the front of `frames`
+    std::vector<float> plot;         ///< last `window` totals, oldest first
+
+    /// Appends a frame; plot keeps its length once full (shifting is cheap at this size).
+    void push(const FrameTimes& t);
+
+    /// Per-stage medians over the frames after the first `skip` ever pushed; zero when none.
+    FrameTimes median(std::size_t skip = 0) const;
+
+    /// Per-stage medians over the last `count` frames.
+    FrameTimes recentMedian(std::size_t count) const;
+};
+
+/// One line: "median 123.4 fps (8.10 ms: render 6.00, compare 0.00, upload 0.20, draw 0.50,
+/// ui 0.80, present 0.60, wait 1.00) over N frames". With the engine on its own thread,
+/// render and compare overlap the other stages and the stages add up to more than the frame.
+std::string fpsReport(const FrameHistory& history, std::size_t skip);
+
+}  // namespace facet::view

@@ -1,0 +1,129 @@
+#include "options.hpp"
+
+#include <charconv>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace facet::view {
+namespace {
+
+std::vector<std::string> choices(const std::vector<std::string_view>& names) {
+    return {names.begin(), names.end()};
+}
+
+}  // namespace
+
+bool parseSize(const std::string& text, int& width, int& height) {
+    const auto x = text.find_first_of("xX");
+    if (x == std::string::npos) return false;
+    const char* b = text.data();
+    const char* e = b + text.size();
+    int w = 0, h = 0;
+    const auto r1 = std::from_chars(b, b + x, w);
+    const auto r2 = std::from_chars(b + x + 1, e, h);
+    if (r1.ec != std::errc{} || r1.ptr != b + x || r2.ec != std::errc{} || r2.ptr != e)
+        return false;
+    if (w < 1 || h < 1 || w > 16384 || h > 16384) return false;
+    width = w;
+    height = h;
+    return true;
+}
+
+ParsedOptions parseOptions(int argc, const char* const* argv) {
+    ParsedOptions out;
+    ViewerOptions& o = out.options;
+    std::string size;
+    CLI::App app{
+        "facet-view: the facet rasterizer in a window. Drag with the left button to orbit, the "
+        "right or middle one to pan, turn the wheel to zoom; F12 or P saves a screenshot, Esc "
+        "quits."};
+    app.add_option("scene", o.scene, "The .scene file to open (default: assets/default.scene)");
+    app.add_option("--size", size, "Window size WxH (default: the scene's, within the screen)");
+    app.add_flag("--keep-scene-size", o.keepSceneSize,
+                 "Render at the scene's size, letterboxed, instead of following the window");
+    app.add_option("--frames", o.frames, "Exit after N frames (default: when the window closes)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--screenshot", o.screenshot, "At exit, write the engine frame to this PNG");
+    app.add_option("--window-shot", o.windowShot,
+                   "At exit, write the whole window (frame and panels) to this PNG");
+    app.add_option("--state", o.statePath,
+                   "At exit, write the camera, light and material to this text file");
+    app.add_flag("--no-vsync", o.noVsync, "Do not wait for the display between frames");
+    app.add_flag("--fps-report", o.fpsReport,
+                 "At exit, print the median fps and how the frame time splits");
+    app.add_flag("--compare", o.compare, "Start in the Compare view (affine | perspective)");
+    app.add_flag("--difference", o.difference,
+                 "Start in the Compare view showing the per-pixel difference as a heat map");
+    app.add_flag("--hide-panels", o.hidePanels, "Start with the panels hidden (Tab shows them)");
+    app.add_flag("--serial", o.serial,
+                 "Render the next frame only after drawing this one (default: at the same time)");
+    app.add_option("--texture", o.texture, "Texture image replacing the scene's");
+    app.add_option("--mode", o.mode, "Draw mode")
+        ->check(CLI::IsMember(choices(drawModeNames())))
+        ->capture_default_str();
+    app.add_option("--shader", o.shader, "Shader")
+        ->check(CLI::IsMember(choices(shaderNames())))
+        ->capture_default_str();
+    app.add_option("--interp", o.interp, "Interpolation: affine, perspective, subdivided[:N]")
+        ->capture_default_str();
+    app.add_option("--lighting", o.lighting, "Lighting")
+        ->check(CLI::IsMember(choices(lightingNames())))
+        ->capture_default_str();
+    app.add_option("--filter", o.filter, "Texture filter")
+        ->check(CLI::IsMember(choices(filterNames())))
+        ->capture_default_str();
+    app.add_flag("--combine", o.combine, "Texture shader: texel times the (lit) vertex colour");
+    app.add_flag("--cull", o.cull, "Drop back faces");
+    app.add_flag("--normals", o.normals, "Draw the vertex normals");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
+        out.exit = true;
+        out.text = app.help();
+        return out;
+    } catch (const CLI::ParseError& e) {
+        out.exit = true;
+        out.exitCode = 2;
+        out.text = std::string("facet-view: ") + e.what() + " (see 'facet-view --help')";
+        return out;
+    }
+    if (!size.empty() && !parseSize(size, o.width, o.height)) {
+        out.exit = true;
+        out.exitCode = 2;
+        out.text = "facet-view: --size wants WxH with 1..16384 each, got '" + size + "'";
+        return out;
+    }
+    if (o.difference) o.compare = true;
+    if (!parseInterpSpec(o.interp)) {
+        out.exit = true;
+        out.exitCode = 2;
+        out.text =
+            "facet-view: --interp wants affine, perspective or subdivided[:N] with N in "
+            "2..256, got '" +
+            o.interp + "'";
+    }
+    return out;
+}
+
+Status applyOptions(const ViewerOptions& o, RenderSettings& settings) {
+    const auto mode = parseDrawMode(o.mode);
+    const auto shader = parseShader(o.shader);
+    const auto interp = parseInterpSpec(o.interp);
+    const auto lighting = parseLighting(o.lighting);
+    const auto filter = parseFilter(o.filter);
+    if (!mode || !shader || !interp || !lighting || !filter)
+        return Error{{}, "unknown mode, shader, interpolation, lighting or filter name"};
+    settings.mode = *mode;
+    settings.shader = *shader;
+    settings.interp = interp->interp;
+    settings.subdivision = interp->subdivision;
+    settings.lighting = *lighting;
+    settings.filter = *filter;
+    settings.combine = o.combine;
+    settings.cullBackFaces = o.cull;
+    settings.showNormals = o.normals;
+    return std::nullopt;
+}
+
+}  // namespace facet::view

@@ -1,0 +1,59 @@
+// Render panel: every RenderSettings field the engine exposes, named by the engine's own lists
+// (drawModeNames() and so on), so a new mode shows up here without touching the viewer.
+
+#include <imgui.h>
+
+#include "facet/mesh.hpp"
+#include "panel_widgets.hpp"
+#include "panels.hpp"
+#include "settings_map.hpp"
+#include "viewer_app.hpp"
+
+namespace facet::view {
+
+void renderPanel(App& app) {
+    RenderSettings& s = app.model.settings;
+    static const auto modes = drawModeNames();
+    static const auto shaders = shaderNames();
+    static const auto interps = interpNames();
+    static const auto filters = filterNames();
+    static const auto lightings = lightingNames();
+
+    int mode = nameIndex(modes, toString(s.mode));
+    if (comboNames("draw mode", modes, mode))
+        s.mode = parseDrawMode(modes[static_cast<std::size_t>(mode)]).value_or(s.mode);
+    int shader = nameIndex(shaders, toString(s.shader));
+    if (comboNames("shader", shaders, shader))
+        s.shader = parseShader(shaders[static_cast<std::size_t>(shader)]).value_or(s.shader);
+    int interp = nameIndex(interps, toString(s.interp));
+    if (comboNames("interpolation", interps, interp))
+        s.interp = parseInterp(interps[static_cast<std::size_t>(interp)]).value_or(s.interp);
+    if (s.interp == Interp::Subdivided) {
+        int n = s.subdivision;
+        if (ImGui::SliderInt("every N pixels", &n, kMinSubdivision, kMaxSubdivision, "%d",
+                             ImGuiSliderFlags_Logarithmic))
+            applyInterp(s, {Interp::Subdivided, n});
+    }
+    int lighting = nameIndex(lightings, toString(s.lighting));
+    if (comboNames("lighting", lightings, lighting))
+        s.lighting =
+            parseLighting(lightings[static_cast<std::size_t>(lighting)]).value_or(s.lighting);
+    int filter = nameIndex(filters, toString(s.filter));
+    if (comboNames("texture filter", filters, filter))
+        s.filter = parseFilter(filters[static_cast<std::size_t>(filter)]).value_or(s.filter);
+    ImGui::Checkbox("combine (texel x colour)", &s.combine);
+    ImGui::Checkbox("cull back faces", &s.cullBackFaces);
+    ImGui::Checkbox("show normals", &s.showNormals);
+    if (s.showNormals) {
+        // 0 means the engine's default, a hundredth of the bounding-box diagonal.
+        const double diagonal = computeBounds(app.model.scene.mesh).diagonal();
+        sliderDouble("normal length", s.normalLength, 0.0, std::max(1e-6, 0.2 * diagonal),
+                     s.normalLength > 0.0 ? "%.4f" : "auto");
+    }
+    if (s.mode == DrawMode::Vertices) ImGui::SliderInt("point size", &s.pointSize, 1, 15);
+    float rgb[3];
+    rgbFromHex(s.background, rgb);
+    if (ImGui::ColorEdit3("background", rgb)) s.background = hexFromRgb(rgb);
+}
+
+}  // namespace facet::view

@@ -1,0 +1,83 @@
+// Stats window (fps, the frame time split, its history, what the engine drew) and the
+// Screenshot panel.
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+
+#include "panels.hpp"
+#include "viewer_app.hpp"
+
+namespace facet::view {
+namespace {
+
+void drawCounts(const char* title, const RenderStats& s) {
+    ImGui::Text("%s%zu triangles in, %zu culled, %zu clipped", title, s.trianglesIn,
+                s.trianglesCulled, s.trianglesClipped);
+    ImGui::Text("%zu rasterized, %zu fragments", s.trianglesRasterized, s.fragments);
+    if (s.linesDrawn || s.pointsDrawn || s.normalsDrawn)
+        ImGui::Text("%zu lines, %zu points, %zu normals", s.linesDrawn, s.pointsDrawn,
+                    s.normalsDrawn);
+}
+
+}  // namespace
+
+void statsWindow(App& app) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
+                            ImVec2(1.0f, 0.0f));
+    // Auto-resize: the numbers change width as they change value.
+    if (!ImGui::Begin("Stats", nullptr,
+                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing)) {
+        ImGui::End();
+        return;
+    }
+    // Medians over the last second or so: steadier than the last frame, still current.
+    const FrameTimes m = app.history.recentMedian(60);
+    ImGui::Text("%.1f fps, %.2f ms a frame (median of 60)", m.total > 0 ? 1000.0 / m.total : 0.0,
+                m.total);
+    if (ImGui::BeginTable("split", 2, ImGuiTableFlags_SizingFixedFit)) {
+        auto row = [](const char* stage, double ms) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(stage);
+            ImGui::TableNextColumn();
+            ImGui::Text("%7.2f ms", ms);
+        };
+        row("engine render", m.render);
+        if (app.compare.enabled) row("compare (diff)", m.compare);
+        row("upload", m.upload);
+        row("draw frame", m.draw);
+        row("ui", m.ui);
+        row("swap + events", m.present);
+        row("waiting for engine", m.wait);
+        ImGui::EndTable();
+    }
+    // Pipelined, the engine's time overlaps the drawing: the frame costs about the larger part.
+    ImGui::Checkbox("engine on its own thread", &app.ui.pipelined);
+    const std::vector<float>& plot = app.history.plot;
+    const float top = plot.empty() ? 1.0f : *std::max_element(plot.begin(), plot.end()) * 1.2f;
+    char overlay[48];
+    std::snprintf(overlay, sizeof overlay, "frame ms (max %.1f)", top / 1.2f);
+    ImGui::PlotLines("##history", plot.data(), static_cast<int>(plot.size()), 0, overlay, 0.0f, top,
+                     ImVec2(300.0f, 60.0f));
+    const Camera& c = app.model.scene.camera;
+    ImGui::Text("frame %dx%d", c.width, c.height);
+    if (app.compare.enabled) {
+        drawCounts("left: ", app.compare.leftStats);
+        drawCounts("right: ", app.compare.rightStats);
+    } else {
+        drawCounts("", app.model.stats);
+    }
+    ImGui::End();
+}
+
+void screenshotPanel(App& app) {
+    ImGui::InputText("folder", &app.ui.screenshotFolder);
+    ImGui::Checkbox("the whole window too", &app.ui.screenshotWindowToo);
+    if (ImGui::Button("Save the frame (F12 or P)")) app.screenshotRequested = true;
+    if (!app.ui.lastScreenshot.empty()) ImGui::TextWrapped("%s", app.ui.lastScreenshot.c_str());
+}
+
+}  // namespace facet::view

@@ -1,0 +1,102 @@
+#include "render_worker.hpp"
+
+#include <chrono>
+#include <utility>
+
+namespace facet::view {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+}  // namespace
+
+RenderWorker::RenderWorker() : thread_([this] { loop(); }) {}
+
+RenderWorker::~RenderWorker() {
+    {
+        std::unique_lock lock(mutex_);
+        cv_.wait(lock, [this] { return !pending_; });
+        quit_ = true;
+    }
+    cv_.notify_all();
+    thread_.join();
+}
+
+void RenderWorker::submit(const Scene& scene, std::uint64_t sceneVersion,
+                          const RenderSettings& settings, const CompareView& compare) {
+    std::unique_lock lock(mutex_);
+    cv_.wait(lock, [this] { return !pending_; });  // the caller should have waited already
+    // The small fields every frame; the mesh (megabytes for big models) only when it changed.
+    if (sceneVersion != sceneVersion_) {
+        scene_.mesh = scene.mesh;
+        sceneVersion_ = sceneVersion;
+    }
+    scene_.path = scene.path;
+    scene_.texture = scene.texture;
+    scene_.camera = scene.camera;
+    scene_.ambient = scene.ambient;
+    scene_.light = scene.light;
+    scene_.material = scene.material;
+    settings_ = settings;
+    compare_.enabled = compare.enabled;
+    compare_.left = compare.left;
+    compare_.right = compare.right;
+    compare_.divider = compare.divider;
+    compare_.display = compare.display;
+    compare_.heatScale = compare.heatScale;
+    pending_ = true;
+    lock.unlock();
+    cv_.notify_all();
+}
+
+const RenderResult& RenderWorker::wait(Framebuffer& shown) {
+    std::unique_lock lock(mutex_);
+    cv_.wait(lock, [this] { return !pending_; });
+    // The finished picture goes to the caller and the caller's old buffer comes back to be
+    // drawn into: both keep their capacity, so a steady size allocates nothing.
+    if (fresh_) {
+        if (result_.compared)
+            std::swap(shown, compare_.shown);
+        else
+            std::swap(shown, frame_);
+        fresh_ = false;
+    }
+    return result_;
+}
+
+void RenderWorker::loop() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        cv_.wait(lock, [this] { return pending_ || quit_; });
+        if (quit_) return;
+        // The job's inputs are not touched by the caller until pending_ is false again.
+        lock.unlock();
+        RenderResult r;
+        const auto t0 = Clock::now();
+        if (compare_.enabled) {
+            compare_.renderSides(scene_, settings_);
+            const auto t1 = Clock::now();
+            compare_.compose();
+            r.renderMs = ms(t0, t1);
+            r.compareMs = ms(t1, Clock::now());
+            r.stats = compare_.leftStats;
+            r.rightStats = compare_.rightStats;
+            r.diff = compare_.diff;
+            r.compared = true;
+        } else {
+            r.stats = renderer_.render(scene_, settings_, frame_);
+            r.renderMs = ms(t0, Clock::now());
+        }
+        lock.lock();
+        result_ = r;
+        pending_ = false;
+        fresh_ = true;
+        cv_.notify_all();
+    }
+}
+
+}  // namespace facet::view

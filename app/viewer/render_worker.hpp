@@ -1,0 +1,73 @@
+#pragma once
+// The engine on a second thread. While the main thread uploads, draws and swaps frame N (on
+// llvmpipe that is several milliseconds of CPU work), the worker renders frame N+1, so a frame
+// costs about the larger of the two instead of their sum. The worker keeps its own copy of the
+// scene: the mesh is copied when a new scene is loaded, the view, light and material every
+// frame, so the panels edit the document freely while it renders.
+//
+// Plain C++ threads, no GL: the unit tests drive it directly.
+
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+
+#include "compare.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/render.hpp"
+#include "facet/scene.hpp"
+#include "facet/settings.hpp"
+
+namespace facet::view {
+
+/// What one finished job produced, for the Stats and Compare panels.
+struct RenderResult {
+    RenderStats stats;       ///< the single render, or the left side in Compare
+    RenderStats rightStats;  ///< Compare: the right side
+    ImageDiff diff;          ///< Compare: left against right
+    bool compared = false;   ///< the job was a Compare job
+    double renderMs = 0.0;   ///< engine time (both sides in Compare)
+    double compareMs = 0.0;  ///< difference and composition time
+};
+
+/// Renders submitted frames on its own thread, one job at a time.
+class RenderWorker {
+  public:
+    RenderWorker();
+    /// Finishes the job in flight and joins the thread.
+    ~RenderWorker();
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    /// Starts rendering `scene` (whose mesh is copied only when `sceneVersion` differs from
+    /// the last job's) with `settings`; with compare.enabled, both sides as `compare` says.
+    /// The previous job must have been collected with wait().
+    void submit(const Scene& scene, std::uint64_t sceneVersion, const RenderSettings& settings,
+                const CompareView& compare);
+
+    /// Blocks until the submitted job is done, then swaps its picture into `shown` (no copy)
+    /// and returns what it did. Without a job in flight it returns the last result unchanged.
+    const RenderResult& wait(Framebuffer& shown);
+
+  private:
+    void loop();
+
+    std::mutex mutex_;
+    std::condition_variable cv_;
+    bool pending_ = false;  // a job was submitted and is not finished
+    bool fresh_ = false;    // a finished job's picture was not handed out yet
+    bool quit_ = false;
+
+    // Owned by the worker while a job runs, by the caller otherwise.
+    Scene scene_;
+    std::uint64_t sceneVersion_ = ~std::uint64_t{0};
+    RenderSettings settings_;
+    CompareView compare_;
+    Renderer renderer_;
+    Framebuffer frame_;
+    RenderResult result_;
+
+    std::thread thread_;  // last: starts after everything above exists
+};
+
+}  // namespace facet::view

@@ -1,0 +1,243 @@
+#include "viewer_app.hpp"
+
+#include <epoxy/gl.h>
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+
+#include "file_list.hpp"
+#include "panels.hpp"
+#include "resources.hpp"
+#include "screenshot.hpp"
+#include "state_file.hpp"
+
+namespace facet::view {
+namespace {
+
+volatile std::sig_atomic_t gStopSignal = 0;  // SIGTERM/SIGINT: finish the frame, write outputs
+
+void onSignal(int) {
+    gStopSignal = 1;
+}
+
+std::string gGlfwError;  // the last GLFW error, for the one-line message
+
+void onGlfwError(int, const char* description) {
+    gGlfwError = description ? description : "unknown GLFW error";
+}
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+    if (action != GLFW_PRESS) return;
+    App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    // A text field being edited owns the keyboard (P is a letter, Esc leaves the field).
+    if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
+    switch (key) {
+        case GLFW_KEY_ESCAPE:
+            app->keys.quit = true;
+            break;
+        case GLFW_KEY_F12:
+        case GLFW_KEY_P:
+            app->keys.screenshot = true;
+            break;
+        case GLFW_KEY_R:
+            app->keys.resetCamera = true;
+            break;
+        case GLFW_KEY_TAB:
+            app->keys.togglePanels = true;
+            break;
+        default:
+            break;
+    }
+}
+
+std::string windowTitle(const Scene& scene) {
+    return "facet-view - " + std::filesystem::path(scene.path).filename().string();
+}
+
+/// The window size: --size, else the scene's image scaled down (aspect kept) to fit the screen.
+void initialWindowSize(const ViewerOptions& o, const Camera& camera, int& w, int& h) {
+    if (o.width > 0 && o.height > 0) {
+        w = o.width;
+        h = o.height;
+        return;
+    }
+    w = camera.width;
+    h = camera.height;
+    const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
+    if (!mode || (w <= mode->width && h <= mode->height)) return;
+    const Rect fit = letterbox(w, h, mode->width, mode->height);
+    w = fit.w;
+    h = fit.h;
+}
+
+}  // namespace
+
+void showError(App& app, const std::string& title, const std::string& message) {
+    app.ui.popupTitle = title;
+    app.ui.popupMessage = message;
+    app.ui.popupPending = true;
+}
+
+void openScene(App& app, const std::string& path) {
+    if (Status error = app.model.load(path)) {
+        showError(app, "Cannot open the scene", error->what() + "\n\nThe previous scene stays.");
+        return;
+    }
+    app.ui.scenePath = path;
+    app.ui.texturePath = app.model.scene.texturePath;
+    if (app.window) glfwSetWindowTitle(app.window, windowTitle(app.model.scene).c_str());
+}
+
+void openTexture(App& app, const std::string& path) {
+    if (Status error = app.model.loadTexture(path))
+        showError(app, "Cannot load the texture", error->what());
+}
+
+void takeScreenshot(App& app) {
+    if (!app.shown) return;
+    const std::string framePath = nextFreePath(app.ui.screenshotFolder, "facet-frame");
+    if (Status error = saveFrameShot(*app.shown, framePath)) {
+        app.ui.lastScreenshot = error->what();
+        return;
+    }
+    app.ui.lastScreenshot = framePath;
+    if (app.ui.screenshotWindowToo) {
+        const std::string windowPath = nextFreePath(app.ui.screenshotFolder, "facet-window");
+        const Status error = saveWindowShot(app.fbWidth, app.fbHeight, windowPath);
+        app.ui.lastScreenshot += error ? " (window: " + error->what() + ")" : ", " + windowPath;
+    }
+    std::printf("facet-view: saved %s\n", app.ui.lastScreenshot.c_str());
+    std::fflush(stdout);
+}
+
+int App::run() {
+    std::signal(SIGTERM, onSignal);
+    std::signal(SIGINT, onSignal);
+    int status = 0;
+    const std::string path = options.scene.empty() ? defaultScenePath() : options.scene;
+    Status error;
+    if (path.empty()) error = Error{{"assets/default.scene", 0}, "not found; name a .scene file"};
+    if (!error) error = model.load(path);
+    if (!error) error = applyOptions(options, model.settings);
+    if (!error && !options.texture.empty()) error = model.loadTexture(options.texture);
+    if (error) {  // bad input is reported the same with or without a display
+        std::fprintf(stderr, "facet-view: %s\n", error->what().c_str());
+        return 2;
+    }
+    ui.scenePath = path;
+    ui.folder = std::filesystem::path(path).parent_path().string();
+    ui.folderFiles = listSceneFiles(ui.folder, &ui.folderError);
+    ui.texturePath = model.scene.texturePath;
+    ui.vsync = !options.noVsync;
+    model.sizePolicy = options.keepSceneSize ? SizePolicy::SceneSize : SizePolicy::FollowWindow;
+    compare.enabled = options.compare;
+    ui.pipelined = !options.serial;
+    if (options.difference) compare.display = CompareDisplay::Difference;
+    ui.showPanels = !options.hidePanels;
+
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        std::fprintf(stderr,
+                     "facet-view: cannot open a window (%s); run it under a virtual display "
+                     "with `xvfb-run -a facet-view ...`, or render to a PNG with `facet render "
+                     "SCENE -o OUT.png`\n",
+                     gGlfwError.c_str());
+        return 2;
+    }
+    int width = 0, height = 0;
+    initialWindowSize(options, model.sceneCamera, width, height);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    // No depth or stencil buffer: nothing here needs one, so none is cleared or carried.
+    glfwWindowHint(GLFW_DEPTH_BITS, 0);
+    glfwWindowHint(GLFW_STENCIL_BITS, 0);
+    window = glfwCreateWindow(width, height, windowTitle(model.scene).c_str(), nullptr, nullptr);
+    if (!window) {
+        std::fprintf(stderr, "facet-view: cannot create an OpenGL 3.3 core window (%s)\n",
+                     gGlfwError.c_str());
+        glfwTerminate();
+        return 2;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(ui.vsync ? 1 : 0);
+    glfwSetWindowUserPointer(window, this);
+    glfwSetKeyCallback(window, onKey);  // before ImGui's, which chains to it
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().Alpha = 0.95f;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    gl = std::make_unique<GlFrame>();
+    std::string glError;
+    const std::string shaders = shaderDir();
+    if (shaders.empty() || !gl->init(shaders, glError)) {
+        std::fprintf(stderr, "facet-view: %s\n",
+                     shaders.empty() ? "cannot find the shaders folder (frame.vert, frame.frag)"
+                                     : glError.c_str());
+        status = 1;
+    }
+
+    worker = std::make_unique<RenderWorker>();
+    vsyncApplied = ui.vsync;
+    while (status == 0) {
+        const auto start = std::chrono::steady_clock::now();
+        glfwPollEvents();
+        const bool last = glfwWindowShouldClose(window) || keys.quit || gStopSignal ||
+                          (options.frames > 0 && frameCount + 1 >= options.frames);
+        glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
+        if (fbWidth <= 0 || fbHeight <= 0) {  // minimised: nothing to draw
+            if (last) break;
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
+        status = frame(start, last);
+        if (last) break;
+    }
+    // The newest engine frame (with the engine on its own thread, one ahead of the screen).
+    worker->wait(display);
+    shown = &display;
+
+    if (status == 0 && !options.screenshot.empty() && shown) {
+        if (Status e = saveFrameShot(*shown, options.screenshot)) {
+            std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
+            status = 1;
+        }
+    }
+    if (!options.statePath.empty()) {
+        if (Status e = writeTextFile(options.statePath, stateText(model, frameCount))) {
+            std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
+            status = 1;
+        }
+    }
+    if (options.fpsReport) {
+        // The first frames pay for first-touch allocations and ImGui's layout pass.
+        const std::size_t skip = std::min<std::size_t>(10, history.frames.size() / 5);
+        std::printf("%s\n", fpsReport(history, skip).c_str());
+    }
+
+    worker.reset();
+    gl.reset();  // GL objects go while the context is current
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    window = nullptr;
+    glfwTerminate();
+    return status;
+}
+
+}  // namespace facet::view

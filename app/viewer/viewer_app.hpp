@@ -1,0 +1,102 @@
+#pragma once
+// The running viewer: the window, the document, the GL frame and the panels' state, and the
+// frame loop that ties them together (events → panels → engine render → upload → draw → UI →
+// swap). Panels and input handlers get the App and edit it between frames.
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compare.hpp"
+#include "frame_stats.hpp"
+#include "gl_frame.hpp"
+#include "layout.hpp"
+#include "options.hpp"
+#include "render_worker.hpp"
+#include "viewer_model.hpp"
+
+struct GLFWwindow;
+
+namespace facet::view {
+
+/// What the panels keep between frames: text fields, the folder listing, the error popup.
+struct UiState {
+    std::string scenePath;  ///< the Scene panel's path field
+    std::string folder;     ///< the folder whose .scene files are listed
+    std::vector<std::string> folderFiles;
+    std::string folderError;
+    std::string texturePath;  ///< the Texture panel's path field
+    std::string screenshotFolder = ".";
+    bool screenshotWindowToo = false;  ///< the screenshot key also saves the whole window
+    std::string lastScreenshot;        ///< what the last screenshot wrote (or its error)
+    std::string popupTitle;            ///< error popup; opened on the next frame when set
+    std::string popupMessage;
+    bool popupPending = false;
+    bool vsync = true;
+    bool pipelined = true;   ///< the engine renders frame N+1 while N is drawn
+    bool showPanels = true;  ///< Tab hides the panels
+};
+
+/// A mouse drag that belongs to the viewer (it started over the image, not a panel).
+struct DragState {
+    int button = -1;       ///< ImGui mouse button, −1: none
+    bool divider = false;  ///< the drag moves the Compare divider
+};
+
+/// Keys seen by the GLFW key callback since the last frame (a press and release between two
+/// frames would be lost by polling).
+struct KeyEvents {
+    bool quit = false;
+    bool screenshot = false;
+    bool resetCamera = false;
+    bool togglePanels = false;
+};
+
+/// The whole viewer.
+struct App {
+    ViewerOptions options;
+    GLFWwindow* window = nullptr;
+    ViewerModel model;
+    CompareView compare;
+    std::unique_ptr<GlFrame> gl;
+    std::unique_ptr<RenderWorker> worker;  ///< the engine's thread
+    Framebuffer display;                   ///< the engine frame being shown (from the worker)
+    FrameHistory history;
+    FrameTimes lastTimes;  ///< the previous frame's split, shown by the Stats panel
+    UiState ui;
+    DragState drag;
+    KeyEvents keys;
+    Rect view;        ///< where the frame is shown in the window
+    int fbWidth = 0;  ///< framebuffer size, pixels
+    int fbHeight = 0;
+    const Framebuffer* shown = nullptr;  ///< the frame on screen (single or Compare)
+    long long frameCount = 0;
+    bool screenshotRequested = false;  ///< from the key or the button; taken this frame
+    bool vsyncApplied = true;          ///< the swap interval last set
+
+    /// Runs until the window closes, --frames is reached or SIGTERM/SIGINT; returns the exit code.
+    int run();
+
+    /// One frame, events already polled at `start`: panels, engine, upload, draw, UI, swap.
+    /// `last` also writes --window-shot. Returns 0, or 1 when an output could not be written.
+    int frame(std::chrono::steady_clock::time_point start, bool last);
+};
+
+/// Loads a scene into the model, or opens the error popup and keeps the old scene.
+void openScene(App& app, const std::string& path);
+
+/// Loads a texture into the scene, or opens the error popup.
+void openTexture(App& app, const std::string& path);
+
+/// Queues the error popup.
+void showError(App& app, const std::string& title, const std::string& message);
+
+/// Saves the shown engine frame (and the window when the panel asks for it) to the next free
+/// numbered files in the screenshot folder; the frame loop calls it before the swap.
+void takeScreenshot(App& app);
+
+/// Mouse and keys for the camera and the Compare divider; call after ImGui::NewFrame().
+void handleInput(App& app);
+
+}  // namespace facet::view

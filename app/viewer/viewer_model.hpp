@@ -1,0 +1,66 @@
+#pragma once
+// The viewer's document: the loaded scene, the user's view of it and the render settings, with
+// the operations the panels and the mouse perform. No window and no OpenGL, so tests drive it
+// directly (a Ks change shows in the next frame; a malformed scene keeps the old one).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "facet/error.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/render.hpp"
+#include "facet/scene.hpp"
+#include "facet/settings.hpp"
+#include "orbit.hpp"
+#include "settings_map.hpp"
+
+namespace facet::view {
+
+/// Most entries kept in ViewerModel::recent.
+inline constexpr std::size_t kMaxRecent = 10;
+
+/// Scene, view and settings, edited in place between frames.
+struct ViewerModel {
+    Scene scene;         ///< what is drawn; scene.camera is rewritten by prepareFrame()
+    Camera sceneCamera;  ///< the camera as the scene file gave it ("reset")
+    Orbit orbit;         ///< the user's view around the look-at point
+    bool orbitMoved =
+        false;             ///< false: the scene's own pose bit for bit (frames equal facet render)
+    double focal = 512.0;  ///< focal length in pixels for the scene's image size
+    RenderSettings settings;
+    SizePolicy sizePolicy = SizePolicy::FollowWindow;
+    std::vector<std::string> recent;  ///< scene files opened, most recent first
+    std::uint64_t sceneVersion = 0;   ///< counts loads, so copies know when the mesh changed
+
+    Renderer renderer;  ///< keeps its scratch buffers from frame to frame
+    Framebuffer frame;  ///< the last frame rendered
+    RenderStats stats;  ///< what the last render did
+
+    /// Loads a scene file; on success it replaces the scene, resets the view and joins the
+    /// recent list; on failure nothing changes and the error names the file and line.
+    Status load(const std::string& path);
+
+    /// Replaces the scene's texture with an image file; on failure nothing changes.
+    Status loadTexture(const std::string& path);
+
+    /// Back to the scene file's camera (pose and focal length).
+    void resetCamera();
+
+    /// Mouse: turn, pan and zoom the orbit (pixels in frame units, wheel steps).
+    void rotate(double dx, double dy);
+    void pan(double dx, double dy);
+    void zoom(double steps);
+
+    /// Call after editing `orbit` fields directly (sliders): clamps and marks the view moved.
+    void orbitEdited();
+
+    /// The camera of the next frame for a window (framebuffer) of the given size; also written
+    /// into scene.camera.
+    const Camera& prepareFrame(int windowWidth, int windowHeight);
+
+    /// Renders the scene with the camera set by prepareFrame() into `frame`.
+    const Framebuffer& render();
+};
+
+}  // namespace facet::view

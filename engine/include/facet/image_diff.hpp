@@ -1,0 +1,31 @@
+#pragma once
+// Per-pixel comparison of two frames: the numbers and the heat map behind the viewer's Compare
+// panel (affine against perspective-correct, say), usable by tests and tools alike.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "facet/framebuffer.hpp"
+
+namespace facet {
+
+/// What a comparison found. Errors are in 8-bit steps (0..255).
+struct ImageDiff {
+    bool sameSize = true;             ///< false: nothing was compared, every count is 0
+    std::size_t pixels = 0;           ///< pixels compared
+    std::size_t pixelsDiffering = 0;  ///< pixels whose error is above 0
+    double meanError = 0.0;           ///< mean error over every compared pixel
+    int maxError = 0;                 ///< largest error of any pixel
+};
+
+/// Error of one pixel: the largest absolute difference of its R, G and B bytes (alpha ignored).
+int pixelError(std::uint32_t a, std::uint32_t b);
+
+/// Compares the colour planes of two frames. When `heat` is given it becomes a frame of the same
+/// size showing each pixel's error: black where the pixels are equal, else viridis over
+/// error / scale (dark purple for small errors, yellow at `scale` and above); `scale` <= 0 means
+/// the largest error found, so any difference is visible. Its depth plane is left as is.
+ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* heat = nullptr,
+                     int scale = 0);
+
+}  // namespace facet

@@ -1,0 +1,65 @@
+#include "facet/image_diff.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+
+#include "facet/colormap.hpp"
+
+namespace facet {
+
+int pixelError(std::uint32_t a, std::uint32_t b) {
+    int worst = 0;
+    for (int shift = 0; shift < 24; shift += 8) {
+        const int ca = static_cast<int>((a >> shift) & 0xFFu);
+        const int cb = static_cast<int>((b >> shift) & 0xFFu);
+        worst = std::max(worst, std::abs(ca - cb));
+    }
+    return worst;
+}
+
+ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* heat, int scale) {
+    ImageDiff d;
+    if (a.width != b.width || a.height != b.height || a.color.size() != b.color.size()) {
+        d.sameSize = false;
+        if (heat) {
+            heat->resize(a.width, a.height);
+            heat->clear(0);
+        }
+        return d;
+    }
+    const std::size_t n = a.color.size();
+    d.pixels = n;
+    // First pass: the error of each pixel, kept in the heat frame's colour plane (or nowhere)
+    // so the second pass can colour it once the largest error is known.
+    std::uint32_t* errors = nullptr;
+    if (heat) {
+        heat->resize(a.width, a.height);
+        errors = heat->color.data();
+    }
+    std::uint64_t sum = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int e = pixelError(a.color[i], b.color[i]);
+        sum += static_cast<std::uint64_t>(e);
+        d.pixelsDiffering += e > 0;
+        d.maxError = std::max(d.maxError, e);
+        if (errors) errors[i] = static_cast<std::uint32_t>(e);
+    }
+    d.meanError = n ? static_cast<double>(sum) / static_cast<double>(n) : 0.0;
+    if (!heat) return d;
+
+    // A 256-entry table: one viridis evaluation per error value, not per pixel.
+    const int top = scale > 0 ? scale : std::max(1, d.maxError);
+    std::array<std::uint32_t, 256> lut{};
+    lut[0] = packRgba(0, 0, 0);
+    for (int e = 1; e < 256; ++e) {
+        const glm::dvec3 c = viridis(static_cast<double>(e) / static_cast<double>(top));
+        auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(v * 255.0)); };
+        lut[static_cast<std::size_t>(e)] = packRgba(byte(c.r), byte(c.g), byte(c.b));
+    }
+    for (std::size_t i = 0; i < n; ++i) errors[i] = lut[errors[i]];
+    return d;
+}
+
+}  // namespace facet

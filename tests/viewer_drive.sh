@@ -1,0 +1,79 @@
+#!/bin/sh
+# Drives a running facet-view with real X input events (xdotool), inside the virtual display
+# that the caller started (viewer_gui_test runs this under `xvfb-run -a`).
+#
+#   viewer_drive.sh SCENARIO OUTDIR VIEWER [VIEWER ARGS...]
+#
+# The viewer starts in OUTDIR with --state state.txt --screenshot frame.png; SCENARIO says what
+# to do with the window (all coordinates relative to it), then Escape closes it:
+#   none    nothing
+#   orbit   left drag across the image, then three wheel turns towards the scene
+#   panel   left drag that starts on the title bar of the "facet" panel
+#   pan     right drag across the image
+#   divider left drag from the middle of the window to x = 900 (the Compare divider)
+#   resize  resize the window to 800x600
+#   key     press P (screenshot into OUTDIR)
+set -u
+scenario=$1
+out=$2
+shift 2
+cd "$out" || exit 1
+
+"$@" --state state.txt --screenshot frame.png >viewer.log 2>&1 &
+pid=$!
+
+# The window exists once it is mapped; give up after 20 s rather than hang the test.
+wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^facet-view' 2>/dev/null | head -n 1)
+if [ -z "$wid" ]; then
+  echo "viewer_drive: no facet-view window appeared" >&2
+  kill -TERM "$pid" 2>/dev/null
+  wait "$pid"
+  exit 1
+fi
+sleep 1  # let it draw a few frames and lay out its panels
+
+# A drag in small steps with pauses: each step lands in a different frame.
+drag() {  # button x0 y0 dx dy steps
+  b=$1 x=$2 y=$3 dx=$4 dy=$5 n=$6
+  xdotool mousemove --window "$wid" "$x" "$y"
+  sleep 0.2
+  xdotool mousedown "$b"
+  sleep 0.2
+  i=1
+  while [ "$i" -le "$n" ]; do
+    xdotool mousemove --window "$wid" $((x + dx * i / n)) $((y + dy * i / n))
+    sleep 0.1
+    i=$((i + 1))
+  done
+  xdotool mouseup "$b"
+  sleep 0.3
+}
+
+case "$scenario" in
+  none) ;;
+  orbit)
+    drag 1 800 450 120 60 6
+    xdotool mousemove --window "$wid" 800 450
+    for _ in 1 2 3; do xdotool click 4; sleep 0.15; done
+    ;;
+  panel) drag 1 120 19 160 120 6 ;;
+  pan) drag 3 800 450 100 50 5 ;;
+  divider) drag 1 640 450 260 0 5 ;;
+  resize) xdotool windowsize "$wid" 800 600; sleep 1 ;;
+  key) xdotool mousemove --window "$wid" 800 450; sleep 0.2; xdotool key p; sleep 0.5 ;;
+  *) echo "viewer_drive: unknown scenario $scenario" >&2 ;;
+esac
+
+sleep 0.5
+xdotool mousemove --window "$wid" 800 450 key Escape
+# Escape should end it within a second; SIGTERM also makes it write its outputs.
+i=0
+while kill -0 "$pid" 2>/dev/null && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+if kill -0 "$pid" 2>/dev/null; then
+  echo "viewer_drive: Escape did not close the viewer; sending SIGTERM" >&2
+  kill -TERM "$pid"
+fi
+wait "$pid"
+status=$?
+echo "viewer exit $status"
+exit "$status"

@@ -1,0 +1,307 @@
+// facet-view as a user meets it: real processes in a virtual X display (xvfb-run), real input
+// events (xdotool), the pictures it writes checked against `facet render` of the same scene.
+// Each test starts its own Xvfb; ctest runs them one at a time (RESOURCE_LOCK), since two
+// `xvfb-run -a` starting together can pick the same display number.
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "facet/framebuffer.hpp"
+#include "facet/image_diff.hpp"
+#include "facet/scene_io.hpp"
+#include "facet/texture.hpp"
+#include "state_file.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace facet;
+
+const std::string kViewer = FACET_VIEWER;
+const std::string kDriver = FACET_VIEWER_DRIVER;
+const std::string kScene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+const std::string kXvfb = "xvfb-run -a -s '-screen 0 1920x1080x24' ";
+
+struct Outcome {
+    int exitCode = -1;
+    std::string out;  // stdout and stderr together
+};
+
+Outcome run(const std::string& cmd) {
+    Outcome r;
+    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf{};
+    while (std::fgets(buf.data(), static_cast<int>(buf.size()), p)) r.out += buf.data();
+    const int status = pclose(p);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+bool have(const char* program) {
+    return std::system((std::string("command -v ") + program + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+/// A PNG as a frame (through the engine's image loader); empty when unreadable.
+Framebuffer readPng(const fs::path& path) {
+    Framebuffer f;
+    Result<Texture> t = loadTexture(path.string());
+    if (!t) return f;
+    const MipLevel& l = t->level(0);
+    f.resize(l.width, l.height);
+    f.color = l.texels;
+    return f;
+}
+
+std::map<std::string, std::string> readState(const fs::path& path) {
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return view::parseState(s.str());
+}
+
+double number(const std::map<std::string, std::string>& state, const std::string& key) {
+    const auto it = state.find(key);
+    return it == state.end() ? NAN : std::stod(it->second);
+}
+
+/// Share of the pixels in [x0, x1) × [y0, y1) that differ between a and b.
+double differingShare(const Framebuffer& a, const Framebuffer& b, int x0, int y0, int x1, int y1) {
+    std::size_t n = 0, differ = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++n)
+            differ += pixelError(a.color[a.index(x, y)], b.color[b.index(x, y)]) > 0;
+    return n ? static_cast<double>(differ) / static_cast<double>(n) : 0.0;
+}
+
+class ViewerGui : public ::testing::Test {
+  protected:
+    fs::path dir;
+
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              ("facet_viewer_gui_" + std::to_string(::getpid()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(dir);  // kept for a look when something failed
+    }
+    std::string path(const std::string& name) const { return (dir / name).string(); }
+
+    /// `facet render` of the default scene with extra options, as the reference picture.
+    Framebuffer cliRender(const std::string& name, const std::string& options = "") {
+        const Outcome r =
+            run(std::string(FACET_CLI) + " render " + kScene + " -o " + path(name) + " " + options);
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        return readPng(path(name));
+    }
+
+    /// Runs the viewer under its own Xvfb, in `dir`.
+    Outcome viewer(const std::string& args) {
+        return run("cd " + dir.string() + " && timeout 60 " + kXvfb + kViewer + " " + args);
+    }
+
+    /// Drives the viewer with xdotool through tests/viewer_drive.sh.
+    Outcome drive(const std::string& scenario, const std::string& args = "--size 1280x720") {
+        return run("timeout 90 " + kXvfb + "sh " + kDriver + " " + scenario + " " + dir.string() +
+                   " " + kViewer + " --no-vsync " + args);
+    }
+};
+
+#define REQUIRE_XVFB() \
+    if (!have("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb)"
+#define REQUIRE_XDOTOOL() \
+    REQUIRE_XVFB();       \
+    if (!have("xdotool")) GTEST_SKIP() << "xdotool is not installed (Debian package xdotool)"
+
+TEST_F(ViewerGui, WithoutADisplayItSaysWhatToDoAndExits2) {
+    const Outcome r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + kViewer + " " + kScene);
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_NE(r.out.find("xvfb-run"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("facet render"), std::string::npos) << r.out;
+}
+
+TEST_F(ViewerGui, BadInputIsOneLineAndExitCode2) {
+    const Outcome scene = run(kViewer + " " + FACET_TEST_DATA + "/scene_light_3_numbers.scene");
+    EXPECT_EQ(scene.exitCode, 2) << scene.out;
+    EXPECT_NE(scene.out.find("scene_light_3_numbers.scene:16: point light needs 4 or 5 numbers"),
+              std::string::npos)
+        << scene.out;
+    for (const char* args : {"--size 0x0", "--frobnicate", "--shader chalk"}) {
+        const Outcome r = run(kViewer + " " + args);
+        EXPECT_EQ(r.exitCode, 2) << args << ": " << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    }
+    const Outcome help = run(kViewer + " --help");
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_NE(help.out.find("--window-shot"), std::string::npos) << help.out;
+}
+
+TEST_F(ViewerGui, SmokeShowsTheEngineFrameAndThePanels) {
+    REQUIRE_XVFB();
+    const Outcome r = viewer(
+        "--frames 5 --size 1280x720 --no-vsync --screenshot frame.png "
+        "--window-shot window.png --state state.txt --fps-report");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("fps"), std::string::npos) << r.out;
+
+    // The engine frame is what `facet render` draws with the same settings.
+    const Framebuffer cli = cliRender("cli.png");
+    const Framebuffer frame = readPng(path("frame.png"));
+    ASSERT_EQ(frame.width, 1280);
+    ASSERT_EQ(frame.height, 720);
+    const ImageDiff d = diffImages(frame, cli);
+    EXPECT_TRUE(d.sameSize);
+    EXPECT_EQ(d.pixelsDiffering, 0u) << "max error " << d.maxError;
+
+    // The window shows that frame texel for texel where no panel covers it...
+    const Framebuffer window = readPng(path("window.png"));
+    ASSERT_EQ(window.width, 1280);
+    ASSERT_EQ(window.height, 720);
+    EXPECT_LT(differingShare(window, frame, 400, 300, 940, 720), 0.001);
+    // ...and the panels on top: the "facet" panel at the left, Stats at the top right.
+    EXPECT_GT(differingShare(window, frame, 15, 15, 365, 300), 0.5);
+    EXPECT_GT(differingShare(window, frame, 980, 15, 1260, 200), 0.5);
+
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("frames"), "5");
+    EXPECT_EQ(state.at("moved"), "0");
+    EXPECT_EQ(state.at("size"), "1280 720");
+}
+
+TEST_F(ViewerGui, CompareSplitsAffineAndPerspective) {
+    REQUIRE_XVFB();
+    const Outcome r =
+        viewer("--compare --frames 3 --size 1280x720 --no-vsync --screenshot compare.png");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const Framebuffer shown = readPng(path("compare.png"));
+    const Framebuffer affine = cliRender("affine.png", "--interp affine");
+    const Framebuffer perspective = cliRender("perspective.png", "--interp perspective");
+    ASSERT_EQ(shown.width, 1280);
+    EXPECT_EQ(differingShare(shown, affine, 0, 0, 640, 720), 0.0);
+    EXPECT_EQ(differingShare(shown, perspective, 641, 0, 1280, 720), 0.0);
+    for (int y = 0; y < 720; y += 10) EXPECT_EQ(shown.color[shown.index(640, y)], 0xFFFFFFFFu);
+}
+
+TEST_F(ViewerGui, KeepingTheSceneSizeLetterboxesTheFrame) {
+    REQUIRE_XVFB();
+    const Outcome r = viewer(
+        "--keep-scene-size --size 640x480 --frames 3 --no-vsync "
+        "--window-shot window.png --state state.txt");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(readState(path("state.txt")).at("size"), "1280 720");
+    const Framebuffer window = readPng(path("window.png"));
+    ASSERT_EQ(window.width, 640);
+    ASSERT_EQ(window.height, 480);
+    // 1280x720 fits 640x480 as 640x360 with 60-pixel bars above and below.
+    const std::uint32_t bar = window.color[window.index(600, 470)];
+    EXPECT_EQ(bar & 0xFFFFFFu, 0x141414u);
+    EXPECT_NE(window.color[window.index(600, 400)], bar);  // the frame's background
+    EXPECT_EQ(window.color[window.index(600, 419)], window.color[window.index(600, 400)]);
+    EXPECT_EQ(window.color[window.index(600, 420)], bar);
+}
+
+TEST_F(ViewerGui, DraggingOverTheImageOrbitsAndTheWheelZooms) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = drive("orbit");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    Result<Scene> scene = loadScene(kScene);
+    ASSERT_TRUE(scene.ok());
+    const double distance = glm::length(scene->camera.eye - scene->camera.look);
+    EXPECT_EQ(state.at("moved"), "1");
+    EXPECT_LT(number(state, "yaw"), -10.0);   // dragged right: the eye went left
+    EXPECT_GT(number(state, "pitch"), 30.0);  // dragged down from 24.6°: the eye went up
+    EXPECT_LT(number(state, "distance"), 0.9 * distance);  // wheel towards the scene
+    const Framebuffer frame = readPng(path("frame.png"));
+    const Framebuffer cli = cliRender("cli.png");
+    EXPECT_GT(diffImages(frame, cli).pixelsDiffering, 10000u);
+}
+
+TEST_F(ViewerGui, ADragStartingOnAPanelLeavesTheCameraAlone) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = drive("panel", "--size 1280x720 --window-shot window.png");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("moved"), "0");
+    EXPECT_EQ(number(state, "yaw"), 0.0);
+    const Framebuffer frame = readPng(path("frame.png"));
+    EXPECT_EQ(diffImages(frame, cliRender("cli.png")).pixelsDiffering, 0u);
+    // The drag went to the panel instead: it moved by (160, 120), uncovering the frame.
+    const Framebuffer window = readPng(path("window.png"));
+    ASSERT_EQ(window.width, 1280);
+    EXPECT_LT(differingShare(window, frame, 15, 15, 160, 120), 0.01);
+    EXPECT_GT(differingShare(window, frame, 180, 140, 500, 300), 0.5);
+}
+
+TEST_F(ViewerGui, RightDragPansEyeAndLookTogether) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = drive("pan");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("moved"), "1");
+    EXPECT_EQ(number(state, "yaw"), 0.0);
+    EXPECT_NE(state.at("target"), "0 0 0");
+    Result<Scene> scene = loadScene(kScene);
+    ASSERT_TRUE(scene.ok());
+    EXPECT_NEAR(number(state, "distance"), glm::length(scene->camera.eye - scene->camera.look),
+                1e-9);
+}
+
+TEST_F(ViewerGui, DraggingTheCompareDividerMovesItNotTheCamera) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = drive("divider", "--size 1280x720 --compare");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("moved"), "0");
+    // The white divider column followed the pointer from x = 640 to x = 900.
+    const Framebuffer shown = readPng(path("frame.png"));
+    ASSERT_EQ(shown.width, 1280);
+    const auto whiteColumn = [&](int x) {
+        for (int y = 0; y < shown.height; y += 8)
+            if (shown.color[shown.index(x, y)] != 0xFFFFFFFFu) return false;
+        return true;
+    };
+    EXPECT_FALSE(whiteColumn(640));
+    int found = -1;
+    for (int x = 880; x <= 920; ++x)
+        if (whiteColumn(x)) found = x;
+    EXPECT_NEAR(found, 900, 2);
+}
+
+TEST_F(ViewerGui, TheFrameFollowsAResizedWindowWithTheSameFraming) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = drive("resize");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("size"), "800 600");
+    EXPECT_NEAR(number(state, "frame_focal"), 1100.0 * 600.0 / 720.0, 1e-9);
+    const Framebuffer frame = readPng(path("frame.png"));
+    EXPECT_EQ(frame.width, 800);
+    EXPECT_EQ(frame.height, 600);
+}
+
+TEST_F(ViewerGui, TheScreenshotKeySavesTheFrame) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = drive("key");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const Framebuffer shot = readPng(path("facet-frame-0001.png"));
+    ASSERT_EQ(shot.width, 1280) << r.out;
+    EXPECT_EQ(diffImages(shot, readPng(path("frame.png"))).pixelsDiffering, 0u);
+}
+
+}  // namespace

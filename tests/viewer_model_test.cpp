@@ -1,0 +1,426 @@
+// The viewer's document and its mappings, without a window: the first frame equals the engine's
+// own render, a control change (Ks, light, background) shows in the very next frame, a
+// malformed scene or texture keeps what was loaded, resizing keeps the framing, and the
+// command line, layout, file lists, state file and frame timing behave.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "facet/camera.hpp"
+#include "facet/render.hpp"
+#include "facet/scene_io.hpp"
+#include "facet/texture.hpp"
+#include "file_list.hpp"
+#include "frame_stats.hpp"
+#include "layout.hpp"
+#include "options.hpp"
+#include "resources.hpp"
+#include "settings_map.hpp"
+#include "state_file.hpp"
+#include "viewer_model.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace facet;
+using namespace facet::view;
+
+const std::string kDefaultScene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+
+std::string data(const std::string& name) {
+    return std::string(FACET_TEST_DATA) + "/" + name;
+}
+
+/// A model with the default scene loaded and one frame of the scene's size rendered.
+ViewerModel loadedModel() {
+    ViewerModel m;
+    const Status error = m.load(kDefaultScene);
+    EXPECT_FALSE(error) << error->what();
+    m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
+    m.render();
+    return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The document
+
+TEST(ViewerModel, FirstFrameEqualsTheEngineRenderOfTheScene) {
+    ViewerModel m = loadedModel();
+    Result<Scene> scene = loadScene(kDefaultScene);
+    ASSERT_TRUE(scene.ok());
+    Renderer renderer;
+    Framebuffer expected;
+    renderer.render(*scene, RenderSettings{}, expected);
+    ASSERT_EQ(m.frame.width, expected.width);
+    ASSERT_EQ(m.frame.height, expected.height);
+    EXPECT_TRUE(m.frame.color == expected.color);
+}
+
+TEST(ViewerModel, MaterialLightAndBackgroundChangesShowInTheNextFrame) {
+    ViewerModel m = loadedModel();
+    m.settings.lighting = Lighting::Gouraud;
+    m.render();
+    const std::vector<std::uint32_t> lit = m.frame.color;
+
+    m.scene.material.ks = 0.0;  // what the Ks slider does
+    m.render();
+    EXPECT_FALSE(m.frame.color == lit) << "Ks = 0 left the frame unchanged";
+    m.scene.material.ks = 0.4;
+    m.render();
+    EXPECT_TRUE(m.frame.color == lit) << "Ks back to 0.4 should restore the frame";
+
+    m.scene.light.position.w = 0.0;  // point → directional
+    m.render();
+    EXPECT_FALSE(m.frame.color == lit);
+    m.scene.light.position.w = 1.0;
+
+    m.scene.ambient = 0.0;
+    m.render();
+    EXPECT_FALSE(m.frame.color == lit);
+    m.scene.ambient = 0.6;
+
+    m.settings.background = 0x102030;
+    m.render();
+    EXPECT_EQ(m.frame.color[0], rgbaFromHex(0x102030));
+}
+
+TEST(ViewerModel, MalformedScenesKeepTheOldOne) {
+    ViewerModel m = loadedModel();
+    const std::vector<std::uint32_t> before = m.frame.color;
+    const std::string path = m.scene.path;
+    const std::size_t triangles = m.scene.mesh.triangleCount();
+    for (const char* bad :
+         {"scene_nan.scene", "scene_inf.scene", "scene_light_3_numbers.scene",
+          "scene_missing_mesh.scene", "scene_bad_mesh.scene", "scene_truncated.scene",
+          "scene_corrupt_texture.scene", "no_such_file.scene"}) {
+        const Status error = m.load(data(bad));
+        ASSERT_TRUE(error) << bad << " loaded";
+        // The popup shows "file:line: message" (or "file: message") naming the file at fault,
+        // the scene or the mesh it names.
+        EXPECT_NE(error->what().find("tests/data/"), std::string::npos) << error->what();
+        EXPECT_EQ(m.scene.path, path) << bad;
+        EXPECT_EQ(m.scene.mesh.triangleCount(), triangles) << bad;
+        m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
+        m.render();
+        EXPECT_TRUE(m.frame.color == before) << bad << " changed the picture";
+    }
+    EXPECT_EQ(m.recent.size(), 1u);  // failures never join the recent list
+    EXPECT_FALSE(m.load(data("scene_valid.scene")));
+    EXPECT_EQ(m.recent.size(), 2u);
+    EXPECT_EQ(m.scene.camera.width, 320);
+}
+
+TEST(ViewerModel, ABadTextureKeepsTheOldOne) {
+    ViewerModel m;
+    ASSERT_FALSE(m.load(data("scene_texture.scene")));
+    ASSERT_TRUE(m.scene.texture);
+    const Texture* before = m.scene.texture.get();
+    EXPECT_TRUE(m.loadTexture(data("tex_not_an_image.png")));
+    EXPECT_TRUE(m.loadTexture(data("no_such_texture.png")));
+    EXPECT_EQ(m.scene.texture.get(), before);
+    EXPECT_FALSE(m.loadTexture(data("tex_4x4.png")));
+    EXPECT_NE(m.scene.texture.get(), before);
+    EXPECT_EQ(m.scene.texture->width(), 4);
+}
+
+TEST(ViewerModel, MouseMovesTheViewAndResetRestoresIt) {
+    ViewerModel m = loadedModel();
+    const std::vector<std::uint32_t> start = m.frame.color;
+    m.rotate(80.0, 30.0);
+    m.prepareFrame(1280, 720);
+    m.render();
+    EXPECT_TRUE(m.orbitMoved);
+    EXPECT_FALSE(m.frame.color == start);
+    m.pan(20.0, 5.0);
+    m.zoom(2.0);
+    m.focal = 500.0;
+    m.resetCamera();
+    m.prepareFrame(1280, 720);
+    m.render();
+    EXPECT_FALSE(m.orbitMoved);
+    EXPECT_EQ(m.focal, m.sceneCamera.focal);
+    EXPECT_TRUE(m.frame.color == start);
+}
+
+TEST(ViewerModel, FollowingTheWindowKeepsTheFraming) {
+    ViewerModel m = loadedModel();
+    // The look-at point stays centred and a world point keeps its place relative to the height.
+    const glm::dvec3 probe(0.5, 0.3, -0.2);
+    const Camera big = m.prepareFrame(1280, 720);
+    const glm::dvec3 a = projectToPixel(big, probe);
+    const Camera small = m.prepareFrame(640, 360);
+    EXPECT_EQ(small.width, 640);
+    EXPECT_EQ(small.height, 360);
+    EXPECT_DOUBLE_EQ(small.focal, 550.0);
+    const glm::dvec3 b = projectToPixel(small, probe);
+    EXPECT_NEAR((b.x - 320.0) * 2.0, a.x - 640.0, 1e-9);
+    EXPECT_NEAR((b.y - 180.0) * 2.0, a.y - 360.0, 1e-9);
+    // A wider window shows more at the sides, the same height.
+    const Camera wide = m.prepareFrame(1920, 720);
+    EXPECT_DOUBLE_EQ(wide.focal, 1100.0);
+    m.sizePolicy = SizePolicy::SceneSize;
+    const Camera kept = m.prepareFrame(300, 200);
+    EXPECT_EQ(kept.width, 1280);
+    EXPECT_EQ(kept.height, 720);
+    EXPECT_DOUBLE_EQ(kept.focal, 1100.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Settings mapping
+
+TEST(ViewerSettings, ComboIndicesFollowTheEngineNameLists) {
+    for (DrawMode v : {DrawMode::Vertices, DrawMode::Wireframe, DrawMode::Solid}) {
+        const auto names = drawModeNames();
+        EXPECT_EQ(parseDrawMode(names[static_cast<std::size_t>(nameIndex(names, toString(v)))]), v);
+    }
+    for (ShaderKind v :
+         {ShaderKind::Simple, ShaderKind::Painter, ShaderKind::Depth, ShaderKind::Texture}) {
+        const auto names = shaderNames();
+        EXPECT_EQ(parseShader(names[static_cast<std::size_t>(nameIndex(names, toString(v)))]), v);
+    }
+    for (Interp v : {Interp::Affine, Interp::Subdivided, Interp::Perspective}) {
+        const auto names = interpNames();
+        EXPECT_EQ(parseInterp(names[static_cast<std::size_t>(nameIndex(names, toString(v)))]), v);
+    }
+    for (Lighting v : {Lighting::Off, Lighting::Gouraud, Lighting::Phong}) {
+        const auto names = lightingNames();
+        EXPECT_EQ(parseLighting(names[static_cast<std::size_t>(nameIndex(names, toString(v)))]), v);
+    }
+    for (TextureFilter v :
+         {TextureFilter::Nearest, TextureFilter::Bilinear, TextureFilter::Trilinear}) {
+        const auto names = filterNames();
+        EXPECT_EQ(parseFilter(names[static_cast<std::size_t>(nameIndex(names, toString(v)))]), v);
+    }
+    EXPECT_EQ(nameIndex(drawModeNames(), "sketch"), 0);
+}
+
+TEST(ViewerSettings, BackgroundColourRoundTripsAndClamps) {
+    for (std::uint32_t hex : {0x000000u, 0xFFFFFFu, 0x5C5C5Cu, 0x123456u, 0xFE01A0u}) {
+        float rgb[3];
+        rgbFromHex(hex, rgb);
+        EXPECT_EQ(hexFromRgb(rgb), hex);
+    }
+    const float odd[3] = {-1.0f, 2.0f, NAN};
+    EXPECT_EQ(hexFromRgb(odd), 0x00FF00u);
+}
+
+TEST(ViewerSettings, InterpolationChoiceWithItsN) {
+    RenderSettings s;
+    applyInterp(s, {Interp::Subdivided, 8});
+    EXPECT_EQ(s.interp, Interp::Subdivided);
+    EXPECT_EQ(s.subdivision, 8);
+    applyInterp(s, {Interp::Subdivided, 100000});
+    EXPECT_EQ(s.subdivision, kMaxSubdivision);
+    applyInterp(s, {Interp::Subdivided, 0});
+    EXPECT_EQ(s.subdivision, kMinSubdivision);
+    EXPECT_EQ(interpOf(s).interp, Interp::Subdivided);
+    EXPECT_EQ(interpLabel({Interp::Subdivided, 16}), "subdivided 16");
+    EXPECT_EQ(interpLabel({Interp::Affine, 16}), "affine");
+}
+
+TEST(ViewerSettings, FrameCameraScalesFocalByTheHeight) {
+    Camera scene;
+    scene.focal = 1000.0;
+    scene.width = 1000;
+    scene.height = 500;
+    const Camera c = frameCamera(scene, SizePolicy::FollowWindow, 400, 250);
+    EXPECT_EQ(c.width, 400);
+    EXPECT_EQ(c.height, 250);
+    EXPECT_DOUBLE_EQ(c.focal, 500.0);
+    const Camera z = frameCamera(scene, SizePolicy::FollowWindow, 0, -5);
+    EXPECT_EQ(z.width, 1);
+    EXPECT_EQ(z.height, 1);
+    const Camera k = frameCamera(scene, SizePolicy::SceneSize, 400, 250);
+    EXPECT_EQ(k.width, 1000);
+    EXPECT_DOUBLE_EQ(k.focal, 1000.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command line
+
+ParsedOptions parse(const std::vector<const char*>& args) {
+    std::vector<const char*> argv{"facet-view"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return parseOptions(static_cast<int>(argv.size()), argv.data());
+}
+
+TEST(ViewerOptions, ParsesTheTestAndBenchmarkOptions) {
+    const ParsedOptions p = parse({"my.scene",
+                                   "--frames",
+                                   "7",
+                                   "--size",
+                                   "800x600",
+                                   "--no-vsync",
+                                   "--fps-report",
+                                   "--screenshot",
+                                   "a.png",
+                                   "--window-shot",
+                                   "b.png",
+                                   "--state",
+                                   "s.txt",
+                                   "--shader",
+                                   "texture",
+                                   "--interp",
+                                   "subdivided:8",
+                                   "--lighting",
+                                   "phong",
+                                   "--compare",
+                                   "--texture",
+                                   "t.png",
+                                   "--keep-scene-size",
+                                   "--cull",
+                                   "--combine",
+                                   "--normals"});
+    ASSERT_FALSE(p.exit) << p.text;
+    const ViewerOptions& o = p.options;
+    EXPECT_EQ(o.scene, "my.scene");
+    EXPECT_EQ(o.frames, 7);
+    EXPECT_EQ(o.width, 800);
+    EXPECT_EQ(o.height, 600);
+    EXPECT_TRUE(o.noVsync && o.fpsReport && o.compare && o.keepSceneSize);
+    EXPECT_EQ(o.screenshot, "a.png");
+    EXPECT_EQ(o.windowShot, "b.png");
+    EXPECT_EQ(o.statePath, "s.txt");
+    EXPECT_EQ(o.texture, "t.png");
+    RenderSettings s;
+    ASSERT_FALSE(applyOptions(o, s));
+    EXPECT_EQ(s.shader, ShaderKind::Texture);
+    EXPECT_EQ(s.interp, Interp::Subdivided);
+    EXPECT_EQ(s.subdivision, 8);
+    EXPECT_EQ(s.lighting, Lighting::Phong);
+    EXPECT_TRUE(s.cullBackFaces && s.combine && s.showNormals);
+}
+
+TEST(ViewerOptions, BadInputIsExitCode2WithOneLine) {
+    for (std::vector<const char*> args : {std::vector<const char*>{"--size", "0x10"},
+                                          {"--size", "big"},
+                                          {"--frames", "-1"},
+                                          {"--mode", "sketch"},
+                                          {"--interp", "subdivided:1"},
+                                          {"--frobnicate"},
+                                          {"a", "b"}}) {
+        const ParsedOptions p = parse(args);
+        EXPECT_TRUE(p.exit) << args[0];
+        EXPECT_EQ(p.exitCode, 2) << args[0];
+        EXPECT_EQ(p.text.find('\n'), std::string::npos) << p.text;
+    }
+    const ParsedOptions help = parse({"--help"});
+    EXPECT_TRUE(help.exit);
+    EXPECT_EQ(help.exitCode, 0);
+    for (const char* opt : {"--frames", "--screenshot", "--window-shot", "--size", "--no-vsync",
+                            "--fps-report", "--state", "--compare", "--texture"})
+        EXPECT_NE(help.text.find(opt), std::string::npos) << opt;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Layout, files, state, timing
+
+TEST(ViewerLayout, LetterboxKeepsTheAspectAndCentres) {
+    const Rect same = letterbox(1280, 720, 1280, 720);
+    EXPECT_EQ(same.x, 0);
+    EXPECT_EQ(same.y, 0);
+    EXPECT_EQ(same.w, 1280);
+    EXPECT_EQ(same.h, 720);
+    const Rect wide = letterbox(1280, 720, 640, 480);  // bars above and below
+    EXPECT_EQ(wide.w, 640);
+    EXPECT_EQ(wide.h, 360);
+    EXPECT_EQ(wide.y, 60);
+    const Rect tall = letterbox(512, 512, 1280, 720);  // bars left and right
+    EXPECT_EQ(tall.w, 720);
+    EXPECT_EQ(tall.h, 720);
+    EXPECT_EQ(tall.x, 280);
+    const Rect tiny = letterbox(16384, 1, 100, 100);
+    EXPECT_GE(tiny.h, 1);
+    EXPECT_EQ(letterbox(10, 10, 0, 5).w, 0);
+    const glm::dvec2 p = windowToFrame(wide, 1280, 720, {320.0, 240.0});
+    EXPECT_DOUBLE_EQ(p.x, 640.0);
+    EXPECT_DOUBLE_EQ(p.y, 360.0);
+    EXPECT_DOUBLE_EQ(frameScale(wide, 1280), 2.0);
+}
+
+TEST(ViewerFiles, ListsScenesRecentAndFreeNames) {
+    std::string error;
+    const auto files = listSceneFiles(FACET_TEST_DATA, &error);
+    EXPECT_TRUE(error.empty()) << error;
+    EXPECT_TRUE(std::is_sorted(files.begin(), files.end()));
+    EXPECT_NE(std::find(files.begin(), files.end(), data("scene_valid.scene")), files.end());
+    for (const auto& f : files) EXPECT_EQ(fs::path(f).extension(), ".scene") << f;
+    EXPECT_TRUE(listSceneFiles("/no/such/folder", &error).empty());
+    EXPECT_FALSE(error.empty());
+
+    std::vector<std::string> recent;
+    pushRecent(recent, "/a.scene", 3);
+    pushRecent(recent, "/b.scene", 3);
+    pushRecent(recent, "/a.scene", 3);
+    pushRecent(recent, "/c.scene", 3);
+    pushRecent(recent, "/d.scene", 3);
+    EXPECT_EQ(recent, (std::vector<std::string>{"/d.scene", "/c.scene", "/a.scene"}));
+
+    const fs::path dir = fs::temp_directory_path() / "facet_viewer_model_test_shots";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string first = nextFreePath(dir.string(), "shot");
+    EXPECT_EQ(fs::path(first).filename(), "shot-0001.png");
+    std::ofstream(first) << "x";
+    EXPECT_EQ(fs::path(nextFreePath(dir.string(), "shot")).filename(), "shot-0002.png");
+    fs::remove_all(dir);
+}
+
+TEST(ViewerState, TextHoldsTheViewLightAndMaterial) {
+    ViewerModel m = loadedModel();
+    m.rotate(10.0, 0.0);
+    m.scene.material.ks = 0.25;
+    m.prepareFrame(640, 360);
+    const auto state = parseState(stateText(m, 42));
+    EXPECT_EQ(state.at("frames"), "42");
+    EXPECT_EQ(state.at("moved"), "1");
+    EXPECT_NEAR(std::stod(state.at("yaw")), -3.0, 1e-12);
+    EXPECT_NEAR(std::stod(state.at("distance")), m.orbit.distance, 1e-12);
+    EXPECT_EQ(state.at("size"), "640 360");
+    EXPECT_EQ(state.at("material").substr(0, 12), "0.5 0.699999");
+    EXPECT_NE(state.at("material").find(" 0.25 "), std::string::npos) << state.at("material");
+    EXPECT_EQ(state.at("scene"), m.scene.path);
+    EXPECT_TRUE(writeTextFile("/no/such/folder/state.txt", "x"));
+}
+
+TEST(ViewerStats, MediansAndTheHistoryWindow) {
+    FrameHistory h;
+    h.window = 4;
+    for (int i = 1; i <= 9; ++i) {
+        FrameTimes t;
+        t.render = i;
+        t.total = 10.0 * i;
+        h.push(t);
+    }
+    EXPECT_EQ(h.plot.size(), 4u);
+    EXPECT_FLOAT_EQ(h.plot.front(), 60.0f);
+    EXPECT_FLOAT_EQ(h.plot.back(), 90.0f);
+    EXPECT_DOUBLE_EQ(h.median().render, 5.0);
+    EXPECT_DOUBLE_EQ(h.median(5).render, 7.5);  // frames 6..9
+    EXPECT_DOUBLE_EQ(h.recentMedian(3).total, 80.0);
+    const std::string line = fpsReport(h, 0);
+    EXPECT_NE(line.find("median 20.0 fps"), std::string::npos) << line;  // 50 ms
+    EXPECT_NE(line.find("over 9 frames"), std::string::npos) << line;
+    h.capacity = 4;
+    for (int i = 0; i < 10; ++i) h.push(FrameTimes{});
+    EXPECT_LE(h.frames.size(), 4u);
+    EXPECT_EQ(h.dropped + h.frames.size(), 19u);
+}
+
+TEST(ViewerResources, FindsTheDefaultSceneAndTheShaders) {
+    const std::string scene = defaultScenePath();
+    ASSERT_FALSE(scene.empty());
+    EXPECT_TRUE(fs::exists(scene));
+    const std::string shaders = shaderDir();
+    ASSERT_FALSE(shaders.empty());
+    EXPECT_TRUE(fs::exists(fs::path(shaders) / "frame.vert"));
+    EXPECT_TRUE(fs::exists(fs::path(shaders) / "frame.frag"));
+    EXPECT_EQ(findResource("no/such/file.txt", "/nowhere"), "");
+}
+
+}  // namespace
