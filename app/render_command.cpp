@@ -101,8 +101,9 @@ int runRender(const RenderOptions& o) {
         if (Status st = loadSceneTexture(scene, o.texture)) return bad(st->what());
     }
     if (settings.shader == ShaderKind::Texture && !scene.texture)
-        return bad(o.scene + ": the texture shader needs a texture: the scene names none (line 10 "
-                             "or an OBJ map_Kd); give one with --texture IMAGE");
+        return bad(o.scene +
+                   ": the texture shader needs a texture: the scene names none (line 10 "
+                   "or an OBJ map_Kd); give one with --texture IMAGE");
     if (settings.shader == ShaderKind::Texture && !scene.mesh.hasUvs())
         std::fprintf(stderr,
                      "facet render: warning: %s has no texture coordinates; every pixel samples "
@@ -166,7 +167,10 @@ int runRender(const RenderOptions& o) {
         if (settings.shader == ShaderKind::Depth)
             std::printf("depth range: %.6g .. %.6g (near dark, far bright)\n", stats.depthNear,
                         stats.depthFar);
-        std::printf("time: %.3f ms (last frame)\n", ms.back());
+        std::printf(
+            "time: %.3f ms (last frame: clear %.3f, vertices %.3f, raster + shade %.3f, "
+            "post %.3f)\n",
+            ms.back(), stats.clearMs, stats.vertexMs, stats.rasterMs, stats.postMs);
     }
     return kOk;
 }

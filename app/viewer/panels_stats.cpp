@@ -46,6 +46,13 @@ void statsWindow(App& app) {
             ImGui::Text("%7.2f ms", ms);
         };
         row("engine render", m.render);
+        // The engine's own split of its last frame (the depth colours are in "raster" for the
+        // depth shader).
+        const RenderStats& e = app.model.stats;
+        row("  clear", e.clearMs);
+        row("  vertices", e.vertexMs);
+        row("  raster + shade", e.rasterMs);
+        row("  post passes", e.postMs);
         if (app.compare.enabled) row("compare (diff)", m.compare);
         row("upload", m.upload);
         row("draw frame", m.draw);

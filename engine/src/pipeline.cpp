@@ -3,6 +3,7 @@
 // branch on the settings, no virtual call and no allocation.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -30,17 +31,18 @@ namespace detail {
 void countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
     const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
     forEachCovered(setup, [&](int x, int y) {
-        std::uint16_t& n = c.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) +
-                                    static_cast<std::size_t>(x)];
+        std::uint16_t& n =
+            c.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) +
+                     static_cast<std::size_t>(x)];
         if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
     });
 }
 
 std::string_view VaryingLayout::names() const {
     // One literal per layout: the names live as long as the program.
-    static constexpr std::string_view kNames[8] = {
-        "1/w",         "1/w rgb",         "1/w uv",         "1/w rgb uv",
-        "1/w n p",     "1/w rgb n p",     "1/w uv n p",     "1/w rgb uv n p"};
+    static constexpr std::string_view kNames[8] = {"1/w",        "1/w rgb",       "1/w uv",
+                                                   "1/w rgb uv", "1/w n p",       "1/w rgb n p",
+                                                   "1/w uv n p", "1/w rgb uv n p"};
     return kNames[(color ? 1 : 0) + (uv ? 2 : 0) + (phong ? 4 : 0)];
 }
 
@@ -83,8 +85,8 @@ bool usesColor(const RenderSettings& s) {
 
 VariantKey variantKey(const RenderSettings& s, const DrawInput& in) {
     const bool texture = s.shader == ShaderKind::Texture;
-    VariantKey k{s.shader, s.interp, {}, texture ? s.filter : TextureFilter::Nearest,
-                 texture && s.combine};
+    VariantKey k{
+        s.shader, s.interp, {}, texture ? s.filter : TextureFilter::Nearest, texture && s.combine};
     k.layout.color = usesColor(s) && !in.colors.empty();
     k.layout.uv = texture;
     k.layout.phong = usesColor(s) && s.lighting == Lighting::Phong && !in.normals.empty();
@@ -107,48 +109,47 @@ void withBool(bool value, Fn&& fn) {
 /// Calls fn with the Variant type for `key`; only meaningful combinations are instantiated.
 template <class Fn>
 void dispatch(const VariantKey& key, Fn&& fn) {
-    withEnum<Interp, Interp::Affine, Interp::Subdivided, Interp::Perspective>(
-        key.interp, [&](auto interp) {
-            constexpr Interp I = decltype(interp)::value;
-            constexpr TextureFilter N = TextureFilter::Nearest;
-            auto colored = [&](auto shader) {
-                constexpr ShaderKind S = decltype(shader)::value;
-                withBool(key.layout.color, [&](auto c) {
-                    withBool(key.layout.phong, [&](auto ph) {
-                        fn(Variant<S, I, decltype(c)::value, false, decltype(ph)::value, N,
-                                   false>{});
-                    });
+    withEnum<Interp, Interp::Affine, Interp::Subdivided,
+             Interp::Perspective>(key.interp, [&](auto interp) {
+        constexpr Interp I = decltype(interp)::value;
+        constexpr TextureFilter N = TextureFilter::Nearest;
+        auto colored = [&](auto shader) {
+            constexpr ShaderKind S = decltype(shader)::value;
+            withBool(key.layout.color, [&](auto c) {
+                withBool(key.layout.phong, [&](auto ph) {
+                    fn(Variant<S, I, decltype(c)::value, false, decltype(ph)::value, N, false>{});
                 });
-            };
-            switch (key.shader) {
-                case ShaderKind::Simple:
-                    colored(std::integral_constant<ShaderKind, ShaderKind::Simple>{});
-                    break;
-                case ShaderKind::Painter:
-                    colored(std::integral_constant<ShaderKind, ShaderKind::Painter>{});
-                    break;
-                case ShaderKind::Depth:
-                    fn(Variant<ShaderKind::Depth, I, false, false, false, N, false>{});
-                    break;
-                case ShaderKind::Texture:
-                    withEnum<TextureFilter, TextureFilter::Nearest, TextureFilter::Bilinear,
-                             TextureFilter::Trilinear>(key.filter, [&](auto filter) {
-                        constexpr TextureFilter F = decltype(filter)::value;
-                        constexpr ShaderKind T = ShaderKind::Texture;
-                        if (!key.combine) {
-                            fn(Variant<T, I, false, true, false, F, false>{});
-                            return;
-                        }
-                        withBool(key.layout.color, [&](auto c) {
-                            withBool(key.layout.phong, [&](auto ph) {
-                                fn(Variant<T, I, decltype(c)::value, true, decltype(ph)::value,
-                                           F, true>{});
-                            });
+            });
+        };
+        switch (key.shader) {
+            case ShaderKind::Simple:
+                colored(std::integral_constant<ShaderKind, ShaderKind::Simple>{});
+                break;
+            case ShaderKind::Painter:
+                colored(std::integral_constant<ShaderKind, ShaderKind::Painter>{});
+                break;
+            case ShaderKind::Depth:
+                fn(Variant<ShaderKind::Depth, I, false, false, false, N, false>{});
+                break;
+            case ShaderKind::Texture:
+                withEnum<TextureFilter, TextureFilter::Nearest, TextureFilter::Bilinear,
+                         TextureFilter::Trilinear>(key.filter, [&](auto filter) {
+                    constexpr TextureFilter F = decltype(filter)::value;
+                    constexpr ShaderKind T = ShaderKind::Texture;
+                    if (!key.combine) {
+                        fn(Variant<T, I, false, true, false, F, false>{});
+                        return;
+                    }
+                    withBool(key.layout.color, [&](auto c) {
+                        withBool(key.layout.phong, [&](auto ph) {
+                            fn(Variant<T, I, decltype(c)::value, true, decltype(ph)::value, F,
+                                       true>{});
                         });
                     });
-                    break;
-            }
-        });
+                });
+                break;
+        }
+    });
 }
 
 /// Bytes per vertex the draw reads or derives, for --stats.
@@ -159,6 +160,15 @@ std::size_t vertexBytes(const RenderSettings& s, const Mesh& mesh, const Variant
     if (key.layout.phong || s.showNormals) bytes += sizeof(glm::vec3);  // normals
     if (key.layout.uv && mesh.hasUvs()) bytes += sizeof(glm::vec2);
     return bytes;
+}
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point& t) {
+    const Clock::time_point now = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+    t = now;
+    return ms;
 }
 
 const Texture& whiteTexture() {
@@ -183,8 +193,8 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
         switch (settings.mode) {
             case DrawMode::Solid: {
                 RasterContext ctx{&frame, &constants, &stats.fragments, subdivision};
-                drawTriangles(input, V::kLayout, settings.cullBackFaces, frame.width,
-                              frame.height, &rasterizeTriangle<V>, &ctx, stats);
+                drawTriangles(input, V::kLayout, settings.cullBackFaces, frame.width, frame.height,
+                              &rasterizeTriangle<V>, &ctx, stats);
                 break;
             }
             case DrawMode::Wireframe:
@@ -212,9 +222,11 @@ void Renderer::countCoverage(const DrawInput& input, const RenderSettings& setti
 
 RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
                              Framebuffer& frame) {
+    Clock::time_point t = Clock::now();
     const Camera& cam = scene.camera;
     frame.resize(cam.width, cam.height);
     frame.clear(rgbaFromHex(settings.background));
+    const double clearMs = msSince(t);
     // The transform is built in double and applied in float: one matrix, no per-vertex doubles.
     const glm::mat4 clipFromWorldF(clipFromWorld(cam));
     const Mesh& mesh = scene.mesh;
@@ -250,12 +262,17 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     }
     if (settings.shader == ShaderKind::Texture) input.uvs = mesh.uvs;
 
+    const double vertexMs = msSince(t);
     RenderStats stats = draw(input, settings, frame);
+    stats.clearMs = clearMs;
+    stats.vertexMs = vertexMs;
+    stats.rasterMs = msSince(t);
     stats.vertexBytes = vertexBytes(settings, mesh, variantKey(settings, input));
     if (settings.showNormals) drawNormals(scene, settings, input.nearPlane, frame, stats);
     // Last, so neither the normals nor the depth colours cover it.
     if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
         drawDepthLegend(frame, stats.depthNear, stats.depthFar);
+    stats.postMs = msSince(t);
     return stats;
 }
 

@@ -50,8 +50,12 @@ struct RenderStats {
     std::size_t fragments = 0;            ///< pixels that passed coverage (before the depth test)
     float depthNear = 0.0f;               ///< smallest depth left in the frame (depth shader)
     float depthFar = 0.0f;                ///< largest depth left in the frame (depth shader)
-    std::size_t vertexBytes = 0;    ///< bytes per vertex the draw read or derived (clip included)
-    int varyings = 0;               ///< floats interpolated per fragment, depth (1/w) included
+    std::size_t vertexBytes = 0;  ///< bytes per vertex the draw read or derived (clip included)
+    int varyings = 0;             ///< floats interpolated per fragment, depth (1/w) included
+    /// Wall-clock time of render()'s stages, in ms (clocked per draw, never per pixel):
+    /// clear, vertex work (transform, normals, Gouraud), rasterize + shade, and the passes after
+    /// (normals display, legend).
+    double clearMs = 0.0, vertexMs = 0.0, rasterMs = 0.0, postMs = 0.0;
     std::string_view varyingNames;  ///< what they are, e.g. "depth rgb uv" (static storage)
 };
 
