@@ -22,10 +22,18 @@ constexpr double kCancelled = 1e-9;
 }  // namespace
 
 std::vector<glm::vec3> computeVertexNormals(const Mesh& mesh) {
+    std::vector<glm::vec3> normals;
+    std::vector<glm::dvec4> scratch;
+    computeVertexNormals(mesh, normals, scratch);
+    return normals;
+}
+
+void computeVertexNormals(const Mesh& mesh, std::vector<glm::vec3>& normals,
+                          std::vector<glm::dvec4>& scratch) {
     const std::size_t n = mesh.vertexCount();
     // Double accumulation: a vertex of a fine mesh sums many small, nearly parallel vectors.
-    std::vector<glm::dvec3> sum(n, glm::dvec3(0.0));
-    std::vector<double> magnitude(n, 0.0);
+    // xyz: the weighted sum; w: the sum of the weights' lengths (for the cancellation test).
+    scratch.assign(n, glm::dvec4(0.0));
 
     const std::size_t triangles = mesh.triangleCount();
     for (std::size_t t = 0; t < triangles; ++t) {
@@ -35,20 +43,17 @@ std::vector<glm::vec3> computeVertexNormals(const Mesh& mesh) {
         const glm::dvec3 p1(mesh.positions[v[1]]);
         const glm::dvec3 p2(mesh.positions[v[2]]);
         const glm::dvec3 weighted = glm::cross(p1 - p0, p2 - p0);
-        const double length = glm::length(weighted);
-        for (int k = 0; k < 3; ++k) {
-            sum[v[k]] += weighted;
-            magnitude[v[k]] += length;
-        }
+        const glm::dvec4 add(weighted, glm::length(weighted));
+        for (int k = 0; k < 3; ++k) scratch[v[k]] += add;
     }
 
-    std::vector<glm::vec3> normals(n, glm::vec3(0.0f));
+    normals.assign(n, glm::vec3(0.0f));
     for (std::size_t i = 0; i < n; ++i) {
-        const double length = glm::length(sum[i]);
+        const glm::dvec3 sum(scratch[i]);
+        const double length = glm::length(sum);
         // Also false for 0 = 0 (no face of non-zero area), so the division below is safe.
-        if (length > kCancelled * magnitude[i]) normals[i] = glm::vec3(sum[i] / length);
+        if (length > kCancelled * scratch[i].w) normals[i] = glm::vec3(sum / length);
     }
-    return normals;
 }
 
 float normalDisplayLength(const Mesh& mesh) {

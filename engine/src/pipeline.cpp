@@ -244,7 +244,7 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
                     .eye = glm::vec3(cam.eye)};
     // Lighting only changes colour: a depth image or a bare texel needs no normals.
     const bool lit = settings.lighting != Lighting::Off && usesColor(settings);
-    if (lit || settings.showNormals) normals_ = computeVertexNormals(mesh);
+    if (lit || settings.showNormals) computeVertexNormals(mesh, normals_, normalSums_);
     if (lit && settings.lighting == Lighting::Gouraud) {
         // Gouraud: the formula once per vertex in world space; the rasterizer then
         // interpolates the lit colour like any other vertex colour.

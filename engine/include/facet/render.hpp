@@ -86,6 +86,7 @@ class Renderer {
     std::vector<glm::vec4> clip_;
     std::vector<glm::vec3> litColors_;
     std::vector<glm::vec3> normals_;
+    std::vector<glm::dvec4> normalSums_;
     std::vector<glm::vec4> normalClip_;  // the normals display: two clip points per vertex
     std::vector<std::uint32_t> edges_;
 };
