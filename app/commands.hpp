@@ -15,4 +15,7 @@ void addRenderCommand(CLI::App& app, int& exitCode);
 /// `facet generate KIND -o OUT.off [options]`.
 void addGenerateCommand(CLI::App& app, int& exitCode);
 
+/// `facet render-gl SCENE -o OUT.png [options]`: the OpenGL twin, headless through EGL.
+void addGlRenderCommand(CLI::App& app, int& exitCode);
+
 }  // namespace facet::app

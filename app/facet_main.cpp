@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     int exitCode = facet::app::kOk;
     facet::app::addRenderCommand(app, exitCode);
     facet::app::addGenerateCommand(app, exitCode);
+    facet::app::addGlRenderCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {

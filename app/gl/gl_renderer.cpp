@@ -1,0 +1,275 @@
+// The twin's frame: choose the shader variant, upload the streams it reads, draw the main pass
+// and the normals, read back, then the post-processes the engine also runs after drawing
+// (depth colours, legend).
+
+#include "gl_renderer.hpp"
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "facet/camera.hpp"
+#include "facet/legend.hpp"
+#include "facet/lighting.hpp"
+#include "facet/mesh.hpp"
+#include "facet/normals.hpp"
+#include "facet/render.hpp"
+#include "gl_depth_colors.hpp"
+#include "gl_lines.hpp"
+#include "gl_program.hpp"
+#include "gl_state.hpp"
+#include "gl_streams.hpp"
+#include "gl_target.hpp"
+#include "gl_texture.hpp"
+#include "gl_variant.hpp"
+
+namespace facet {
+namespace gl {
+
+/// Everything the renderer keeps between frames.
+struct RendererState {
+    ShaderSources sources;
+    bool clipControl = false;                 ///< glClipControl available (exact depth)
+    std::map<std::string, Program> programs;  ///< built variants, by their #defines
+    RenderTarget target;
+    VertexStreams mesh;     ///< the scene's vertices
+    VertexStreams normals;  ///< the normals display's segments
+    TextureCache texture;
+    WireframeIndices wireframe;
+    std::vector<glm::vec3> segments;  ///< normals display: two world points per vertex
+    std::vector<float> rangeDepth;    ///< Depth shader with normals: depth before the normals
+};
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+/// A vector of glm vectors as the floats GL reads.
+template <class V>
+std::span<const float> floats(const std::vector<V>& v) {
+    static_assert(sizeof(V) == V::length() * sizeof(float), "tightly packed floats");
+    return {reinterpret_cast<const float*>(v.data()), v.size() * V::length()};
+}
+
+/// The program of a variant, built on first use.
+Result<GLuint> programFor(RendererState& s, const std::string& defines) {
+    auto it = s.programs.find(defines);
+    if (it == s.programs.end()) {
+        Result<Program> built = buildProgram(s.sources, defines);
+        if (!built) return built.error();
+        it = s.programs.emplace(defines, std::move(built).value()).first;
+    }
+    return it->second.get();
+}
+
+/// Uniforms every variant of a frame shares.
+struct FrameUniforms {
+    glm::mat4 clipFromWorld;
+    glm::vec2 viewport;
+    float nearPlane;
+    int pointSize;
+    FastLighting lighting;
+    glm::vec3 eye;
+};
+
+/// Binds `program` and sets its uniforms; those a variant does not use are ignored by GL.
+void useProgram(GLuint program, const FrameUniforms& u, const glm::vec3& baseColor) {
+    glUseProgram(program);
+    auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
+    glUniformMatrix4fv(at("clipFromWorld"), 1, GL_FALSE, glm::value_ptr(u.clipFromWorld));
+    glUniform2f(at("viewport"), u.viewport.x, u.viewport.y);
+    glUniform1f(at("nearPlane"), u.nearPlane);
+    glUniform1i(at("pointSize"), u.pointSize);
+    const FastLighting& l = u.lighting;
+    glUniform4f(at("light"), l.light.x, l.light.y, l.light.z, l.light.w);
+    glUniform4f(at("lightTerms"), l.ambientTerm, l.diffuse, l.specular, l.shininess);
+    glUniform3f(at("eye"), u.eye.x, u.eye.y, u.eye.z);
+    glUniform3f(at("baseColor"), baseColor.r, baseColor.g, baseColor.b);
+    glUniform1i(at("tex"), 0);
+}
+
+/// LESS on Z is GREATER on the stored nearPlane / Z (twin.vert); Simple tests nothing and, as
+/// GL writes depth only while testing, leaves the depth empty like the engine.
+void setDepthTest(bool tested) {
+    if (tested) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_GREATER);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
+}
+
+/// Fills the mesh streams the variant reads; returns the bytes sent.
+std::size_t uploadMesh(RendererState& s, const Mesh& mesh, const Variant& v,
+                       const std::vector<glm::vec3>& normals) {
+    VertexStreams& m = s.mesh;
+    std::size_t bytes = m.upload(Attribute::Position, floats(mesh.positions), 3);
+    if (v.color && mesh.hasColors())
+        bytes += m.upload(Attribute::Color, floats(mesh.colors), 3);
+    else
+        m.constant(Attribute::Color, glm::vec4(1.0f));  // no colours: white
+    if (v.texture && mesh.hasUvs())
+        bytes += m.upload(Attribute::Uv, floats(mesh.uvs), 2);
+    else
+        m.constant(Attribute::Uv, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    if (v.gouraud || v.phong)
+        bytes += m.upload(Attribute::Normal, floats(normals), 3);
+    else
+        m.constant(Attribute::Normal, glm::vec4(0.0f));
+    m.setDivisor(v.mode == DrawMode::Vertices ? 1 : 0);
+    if (v.mode == DrawMode::Solid) bytes += m.uploadIndices(mesh.indices);
+    if (v.mode == DrawMode::Wireframe) {
+        s.wireframe.build(mesh);
+        bytes += m.uploadIndices(s.wireframe.indices);
+    }
+    return bytes;
+}
+
+/// The normals display (conventions §8): a red segment from each vertex with a normal, drawn
+/// after the main pass; under the depth test except with Simple, as in the engine.
+Status drawNormals(RendererState& s, const Scene& scene, const RenderSettings& settings,
+                   const std::vector<glm::vec3>& normals, const FrameUniforms& u, GlStats& stats) {
+    const Mesh& mesh = scene.mesh;
+    const float length = settings.normalLength > 0.0 ? static_cast<float>(settings.normalLength)
+                                                     : normalDisplayLength(mesh);
+    normalSegments(mesh, normals, length, s.segments);
+    stats.normalsDrawn = s.segments.size() / 2;
+    if (s.segments.empty()) return std::nullopt;
+    const Variant lines{.mode = DrawMode::Wireframe};
+    const Result<GLuint> program = programFor(s, definesFor(lines, s.clipControl));
+    if (!program) return program.error();
+    stats.uploadBytes += s.normals.upload(Attribute::Position, floats(s.segments), 3);
+    setDepthTest(settings.shader != ShaderKind::Simple);
+    glDisable(GL_CULL_FACE);
+    useProgram(program.value(), u, glm::vec3(1.0f, 0.0f, 0.0f));
+    s.normals.bind();
+    drawLines(false, s.segments.size(), s.segments.size());
+    return std::nullopt;
+}
+
+}  // namespace
+}  // namespace gl
+
+Result<GlRenderer> GlRenderer::create() {
+    if (glGetString(GL_VERSION) == nullptr)
+        return Error{{"OpenGL twin", 0}, "no current OpenGL context"};
+    if (epoxy_gl_version() < 33 || !epoxy_is_desktop_gl())
+        return Error{{"OpenGL twin", 0},
+                     "needs desktop OpenGL 3.3 core, the context has " +
+                         std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION)))};
+    Result<gl::ShaderSources> sources = gl::loadShaderSources();
+    if (!sources) return sources.error();
+    auto state = std::make_unique<gl::RendererState>();
+    state->sources = std::move(sources).value();
+    state->clipControl = epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_clip_control");
+    return GlRenderer(std::move(state));
+}
+
+GlRenderer::GlRenderer(std::unique_ptr<gl::RendererState> state) : state_(std::move(state)) {}
+GlRenderer::GlRenderer(GlRenderer&& other) noexcept = default;
+GlRenderer& GlRenderer::operator=(GlRenderer&& other) noexcept = default;
+GlRenderer::~GlRenderer() = default;
+
+Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& settings,
+                                   Framebuffer& frame) {
+    using namespace gl;
+    RendererState& s = *state_;
+    GlStats stats;
+    const auto t0 = Clock::now();
+    const Camera& cam = scene.camera;
+    const Mesh& mesh = scene.mesh;
+    const StateGuard guard(s.clipControl);
+    if (Status st = s.target.resize(cam.width, cam.height)) return *st;
+    frame.resize(cam.width, cam.height);
+
+    const Variant v = variantFor(settings, mesh);
+    const Result<GLuint> program = programFor(s, definesFor(v, s.clipControl));
+    if (!program) return program.error();
+    const float nearPlane = static_cast<float>(resolveNearPlane(settings, mesh));
+    // The matrix is built in double and used in float, as the engine does.
+    const FrameUniforms u{glm::mat4(clipFromWorld(cam)),
+                          glm::vec2(static_cast<float>(cam.width), static_cast<float>(cam.height)),
+                          nearPlane,
+                          settings.pointSize,
+                          prepareLighting(lightingParams(scene)),
+                          glm::vec3(cam.eye)};
+
+    std::vector<glm::vec3> normals;
+    if (v.gouraud || v.phong || settings.showNormals) normals = computeVertexNormals(mesh);
+    stats.uploadBytes += uploadMesh(s, mesh, v, normals);
+    if (v.texture) stats.uploadBytes += s.texture.bind(scene.texture, settings.filter);
+    const auto t1 = Clock::now();
+
+    s.target.bind();
+    if (s.clipControl) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    const std::uint32_t bg = settings.background;
+    glClearColor(static_cast<float>((bg >> 16) & 0xFF) / 255.0f,
+                 static_cast<float>((bg >> 8) & 0xFF) / 255.0f,
+                 static_cast<float>(bg & 0xFF) / 255.0f, 1.0f);
+    glClearDepth(0.0);  // stored depth is nearPlane / Z: 0 is infinitely far
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    setDepthTest(settings.shader != ShaderKind::Simple);
+    if (settings.mode == DrawMode::Solid && settings.cullBackFaces) {
+        // Window coordinates are pixel coordinates (y down), where the engine's front faces
+        // (CCW from outside in the world) have a negative signed area: clockwise to GL.
+        glEnable(GL_CULL_FACE);
+        glFrontFace(GL_CW);
+        glCullFace(GL_BACK);
+    }
+    useProgram(program.value(), u, glm::vec3(1.0f));
+    s.mesh.bind();
+    switch (settings.mode) {
+        case DrawMode::Solid:
+            stats.trianglesIn = mesh.indices.size() / 3;
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(stats.trianglesIn * 3),
+                           GL_UNSIGNED_INT, nullptr);
+            break;
+        case DrawMode::Wireframe:
+            stats.linesDrawn = s.wireframe.edgeIndices / 2;
+            drawLines(true, s.wireframe.edgeIndices,
+                      s.wireframe.indices.size() - s.wireframe.edgeIndices);
+            break;
+        case DrawMode::Vertices:
+            // Six corners (two triangles) per instance, one instance per vertex.
+            stats.pointsDrawn = mesh.vertexCount();
+            glDrawArraysInstanced(GL_TRIANGLES, 0, 6, static_cast<GLsizei>(stats.pointsDrawn));
+            break;
+    }
+    if (settings.showNormals) {
+        // The engine colours depth before it draws the normals: take the range now.
+        if (v.depthShader) s.target.readDepth(s.rangeDepth, nearPlane);
+        if (Status st = drawNormals(s, scene, settings, normals, u, stats)) return *st;
+    }
+    glFinish();
+    const auto t2 = Clock::now();
+
+    s.target.readColor(frame);
+    s.target.readDepth(frame.depth, nearPlane);
+    if (v.depthShader) {
+        const DepthRange range =
+            colorDepth(frame, settings.showNormals ? s.rangeDepth : frame.depth);
+        stats.depthNear = range.nearest;
+        stats.depthFar = range.farthest;
+        if (settings.depthLegend && range.farthest > 0.0f)
+            drawDepthLegend(frame, range.nearest, range.farthest);
+    }
+    const auto t3 = Clock::now();
+    stats.uploadMs = msBetween(t0, t1);
+    stats.drawMs = msBetween(t1, t2);
+    stats.readbackMs = msBetween(t2, t3);
+    return stats;
+}
+
+}  // namespace facet

@@ -1,0 +1,62 @@
+#pragma once
+// The OpenGL twin of facet::Renderer: the same scene with the same settings drawn by OpenGL
+// (Mesa's llvmpipe on a machine without a GPU) and read back into a facet::Framebuffer, as a
+// yardstick for speed and an independent check of the pictures. It follows the conventions
+// where GL lets it: camera and pixel centres, top-left fill rule, LESS depth, the lighting
+// formula, repeat wrap, the engine's own mip chain. Where GL decides itself (8-bit texture
+// filter weights, the level of detail, the diamond-exit rule of lines) the pictures differ
+// within the tolerances tests/gl_twin_test.cpp states. Subdivided interpolation is drawn
+// perspective-correct.
+
+#include <cstddef>
+#include <memory>
+
+#include "facet/error.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/scene.hpp"
+#include "facet/settings.hpp"
+
+namespace facet {
+
+/// What a twin frame did, for the CLI, the benchmark and tests.
+struct GlStats {
+    std::size_t trianglesIn = 0;   ///< triangles submitted (solid mode)
+    std::size_t linesDrawn = 0;    ///< edges submitted (wireframe)
+    std::size_t pointsDrawn = 0;   ///< vertex squares submitted
+    std::size_t normalsDrawn = 0;  ///< normal segments submitted (showNormals)
+    float depthNear = 0.0f;        ///< Depth shader: smallest depth in the frame
+    float depthFar = 0.0f;         ///< Depth shader: largest depth in the frame
+    std::size_t uploadBytes = 0;   ///< vertex, index and texture bytes sent this frame
+    double uploadMs = 0.0;         ///< CPU preparation and uploads (normals, edges, buffers)
+    double drawMs = 0.0;           ///< draw calls until glFinish returned
+    double readbackMs = 0.0;       ///< colour and depth readback, depth colours, legend
+};
+
+namespace gl {
+struct RendererState;
+}
+
+/// Renders scenes with OpenGL into a Framebuffer. Every call, including the destructor, needs
+/// the context current that was current at create(); GL state it changes is restored.
+class GlRenderer {
+  public:
+    /// Reads the shaders (compiled per variant on first use); needs a current OpenGL 3.3 core
+    /// context. 4.5 or ARB_clip_control gives full depth precision.
+    static Result<GlRenderer> create();
+
+    GlRenderer(GlRenderer&& other) noexcept;
+    GlRenderer& operator=(GlRenderer&& other) noexcept;
+    /// Deletes the GL objects (the context must be current).
+    ~GlRenderer();
+
+    /// Draws the scene at its camera's size into `frame` (resized), like Renderer::render:
+    /// colour with row 0 at the top, depth as camera-space Z with +inf where nothing drew.
+    /// Errors: a shader variant that does not build, a size beyond the driver's limit.
+    Result<GlStats> render(const Scene& scene, const RenderSettings& settings, Framebuffer& frame);
+
+  private:
+    explicit GlRenderer(std::unique_ptr<gl::RendererState> state);
+    std::unique_ptr<gl::RendererState> state_;
+};
+
+}  // namespace facet

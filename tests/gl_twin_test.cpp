@@ -1,0 +1,433 @@
+// The OpenGL twin (app/gl) against the reference path: an independent renderer held to the
+// same conventions, on the course scenes, Spot and the bunny. Outside the reference's ambiguity
+// mask, coverage and colours must agree within the tolerances stated below (kTriangles...),
+// which were measured on llvmpipe. Each case prints one summary line:
+//   [gl-vs-ref] <case> covered=<n> ambiguous=<n> differing=<n> (<%>)
+//               diff p50/p99/p99.9/max=<lsb> over1=<%>
+// covered: unambiguous pixels the reference drew; ambiguous: pixels the reference flags as
+// rounding-dependent; differing: coverage mismatches among the unambiguous pixels, and their
+// share of `covered`; the diff percentiles (8-bit steps, largest channel) are over the pixels
+// both drew; over1: the share of those more than one step apart.
+// Then: the twin in a context whose state the caller set, a second context, the CLI command.
+// Without a usable EGL (no libegl-mesa0, no driver) every test is skipped and says why.
+
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "facet/framebuffer.hpp"
+#include "facet/reference.hpp"
+#include "facet/scene.hpp"
+#include "facet/scene_io.hpp"
+#include "facet/settings.hpp"
+#include "gl_context.hpp"
+#include "gl_renderer.hpp"
+#include "image_compare.hpp"
+
+namespace {
+
+using facet::DrawMode;
+using facet::Interp;
+using facet::Lighting;
+using facet::ShaderKind;
+using facet::TextureFilter;
+
+// One context and renderer for the whole binary, made on first use and released before exit
+// (the renderer first, while its context is current).
+struct Twin {
+    std::optional<facet::GlContext> context;
+    std::optional<facet::GlRenderer> renderer;
+    std::string whyNot;  ///< why there is no context, for the skip message
+    bool tried = false;
+};
+
+Twin& twin() {
+    static Twin t;
+    if (!t.tried) {
+        t.tried = true;
+        facet::Result<facet::GlContext> c = facet::GlContext::createHeadless();
+        if (!c) {
+            t.whyNot = c.error().what();
+            return t;
+        }
+        t.context.emplace(std::move(c).value());
+        facet::Result<facet::GlRenderer> r = facet::GlRenderer::create();
+        if (!r) {
+            t.whyNot = r.error().what();
+            return t;
+        }
+        t.renderer.emplace(std::move(r).value());
+        std::printf("[gl-vs-ref] %s\n", t.context->description().c_str());
+    }
+    return t;
+}
+
+class TwinEnvironment : public testing::Environment {
+  public:
+    void TearDown() override {
+        Twin& t = twin();
+        t.renderer.reset();
+        t.context.reset();
+    }
+};
+[[maybe_unused]] testing::Environment* const kEnvironment =
+    testing::AddGlobalTestEnvironment(new TwinEnvironment);
+
+/// What a case may differ by, measured on llvmpipe (Mesa 22.3.6, Debian 12) and stated with
+/// some room; the measured values are in the comments and in each case's summary line.
+struct Tolerance {
+    double coverage;  ///< coverage mismatches / covered pixels
+    int p99;          ///< 99th percentile of the colour difference, in 8-bit steps
+    int max;          ///< largest colour difference
+    double over1;     ///< share of the pixels both drew that differ by more than one step
+};
+
+/// Triangles and vertex squares: coverage agreed exactly in every case measured (0 of 11.6M
+/// covered pixels), colours within 1 step (float shading; bilinear with llvmpipe's 8-bit
+/// weights is still within 1), over1 at most 0.002%.
+constexpr Tolerance kTriangles{.coverage = 1e-4, .p99 = 1, .max = 2, .over1 = 1e-4};
+/// Trilinear: llvmpipe takes one level of detail per 2×2 pixel quad, with 8-bit fractions,
+/// where the engine takes the exact derivatives per pixel. Measured p99 2, max 8, over1 5.9%
+/// (the brick facet, minified everywhere).
+constexpr Tolerance kTrilinear{.coverage = 1e-4, .p99 = 3, .max = 10, .over1 = 0.08};
+/// Lines (wireframe, normals): GL's lines are parallelograms under the fill rule, not
+/// Bresenham; twin.vert moves the ends to pixel centres and nudges ties. Measured coverage
+/// mismatches at most 0.073%, over1 0.018%; a line pixel one row off shows what is under it,
+/// so the largest difference is unbounded.
+constexpr Tolerance kLines{.coverage = 0.002, .p99 = 1, .max = 255, .over1 = 0.001};
+/// Lines crossing the near plane: the end GL clips cannot be moved to a pixel centre first.
+/// Measured coverage mismatches at most 1.19%.
+constexpr Tolerance kClippedLines{.coverage = 0.02, .p99 = 1, .max = 255, .over1 = 0.001};
+
+struct Case {
+    std::string scene;  ///< under FACET_SHARED_DIR/data, without ".scene"
+    DrawMode mode = DrawMode::Solid;
+    ShaderKind shader = ShaderKind::Painter;
+    Interp interp = Interp::Perspective;
+    Lighting lighting = Lighting::Off;
+    TextureFilter filter = TextureFilter::Bilinear;
+    bool combine = false;
+    bool cull = false;
+    bool normals = false;
+    double dolly = 1.0;  ///< eye moved to look + dolly·(eye − look): < 1 moves in, clips
+};
+
+const Tolerance& toleranceFor(const Case& c) {
+    if (c.mode == DrawMode::Wireframe) return c.dolly < 1.0 ? kClippedLines : kLines;
+    if (c.normals) return kLines;
+    if (c.shader == ShaderKind::Texture && c.filter == TextureFilter::Trilinear) return kTrilinear;
+    return kTriangles;
+}
+
+std::string caseName(const Case& c) {
+    std::string name = std::filesystem::path(c.scene).filename().string();
+    for (const std::string_view part :
+         {facet::toString(c.mode), facet::toString(c.shader), facet::toString(c.interp)}) {
+        name += '_';
+        name += part;
+    }
+    if (c.lighting != Lighting::Off) {
+        name += '_';
+        name += facet::toString(c.lighting);
+    }
+    if (c.shader == ShaderKind::Texture) {
+        name += '_';
+        name += facet::toString(c.filter);
+        if (c.combine) name += "_combine";
+    }
+    if (c.cull) name += "_cull";
+    if (c.normals) name += "_normals";
+    if (c.dolly != 1.0) name += "_dolly" + std::to_string(static_cast<int>(c.dolly * 1000));
+    return name;
+}
+
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << caseName(c);
+}
+
+std::vector<Case> allCases() {
+    const std::vector<std::string> scenes{"course/example0", "course/example1", "course/example2",
+                                          "course/example_textured", "scenes/spot_1280x720"};
+    std::vector<Case> cases;
+    for (const std::string& scene : scenes) {
+        for (const Interp interp : {Interp::Affine, Interp::Perspective})
+            cases.push_back({.scene = scene, .interp = interp});
+        cases.push_back({.scene = scene, .lighting = Lighting::Gouraud});
+        cases.push_back({.scene = scene, .lighting = Lighting::Phong});
+        cases.push_back({.scene = scene, .shader = ShaderKind::Depth});
+    }
+    for (const std::string scene : {"course/example_textured", "scenes/spot_1280x720"}) {
+        for (const Interp interp : {Interp::Affine, Interp::Perspective})
+            cases.push_back({.scene = scene, .shader = ShaderKind::Texture, .interp = interp});
+        for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Trilinear})
+            cases.push_back({.scene = scene, .shader = ShaderKind::Texture, .filter = filter});
+        cases.push_back({.scene = scene,
+                         .shader = ShaderKind::Texture,
+                         .lighting = Lighting::Phong,
+                         .combine = true});
+    }
+    for (const std::string scene : {"course/example2", "scenes/spot_1280x720"}) {
+        cases.push_back({.scene = scene, .shader = ShaderKind::Simple});
+        cases.push_back({.scene = scene, .cull = true});
+        cases.push_back({.scene = scene, .mode = DrawMode::Vertices});
+        cases.push_back({.scene = scene, .mode = DrawMode::Wireframe});
+        cases.push_back({.scene = scene, .normals = true});
+        cases.push_back({.scene = scene, .shader = ShaderKind::Depth, .normals = true});
+    }
+    // Close-ups: triangles cross the near plane and run far beyond the image.
+    for (const std::string scene : {"course/example2", "scenes/spot_1280x720"}) {
+        for (const double dolly : {0.1, 0.02}) {
+            cases.push_back({.scene = scene, .dolly = dolly});
+            cases.push_back({.scene = scene, .shader = ShaderKind::Depth, .dolly = dolly});
+            cases.push_back({.scene = scene, .mode = DrawMode::Wireframe, .dolly = dolly});
+        }
+    }
+    cases.push_back({.scene = "scenes/spot_1280x720",
+                     .shader = ShaderKind::Texture,
+                     .lighting = Lighting::Phong,
+                     .filter = TextureFilter::Trilinear,
+                     .combine = true,
+                     .dolly = 0.3});
+    // The 69k-triangle bunny: most triangles cover no pixel centre or one.
+    for (const Lighting lighting : {Lighting::Off, Lighting::Gouraud, Lighting::Phong})
+        cases.push_back({.scene = "scenes/bunny_1280x720", .lighting = lighting});
+    cases.push_back({.scene = "scenes/bunny_1280x720", .shader = ShaderKind::Depth});
+    return cases;
+}
+
+/// The course's textured facet names no texture; the course pairs it with the brick image.
+std::string textureFor(const std::string& scene) {
+    return scene == "course/example_textured" ? "course/brick.jpg" : "";
+}
+
+const facet::Scene* loadCached(const std::string& name, std::string& error) {
+    static std::map<std::string, std::unique_ptr<facet::Scene>> cache;
+    auto it = cache.find(name);
+    if (it != cache.end()) return it->second.get();
+    const std::string data = std::string(FACET_SHARED_DIR) + "/data/";
+    facet::Result<facet::Scene> loaded = facet::loadScene(data + name + ".scene");
+    if (!loaded) {
+        error = loaded.error().what();
+        return nullptr;
+    }
+    auto scene = std::make_unique<facet::Scene>(std::move(loaded).value());
+    if (!textureFor(name).empty()) {
+        if (facet::Status st = facet::loadSceneTexture(*scene, data + textureFor(name))) {
+            error = st->what();
+            return nullptr;
+        }
+    }
+    return cache.emplace(name, std::move(scene)).first->second.get();
+}
+
+/// Colour differences over the unambiguous pixels both images drew, as a histogram.
+struct DiffHistogram {
+    std::array<std::size_t, 256> count{};
+    std::size_t total = 0;
+
+    /// The smallest difference at or above which lies `fraction` of the pixels.
+    int percentile(double fraction) const {
+        const auto target =
+            static_cast<std::size_t>(std::ceil(fraction * static_cast<double>(total)));
+        std::size_t seen = 0;
+        for (int d = 0; d < 256; ++d) {
+            seen += count[d];
+            if (seen >= target && seen > 0) return d;
+        }
+        return 0;
+    }
+    int max() const {
+        for (int d = 255; d > 0; --d)
+            if (count[d] > 0) return d;
+        return 0;
+    }
+    std::size_t above(int d) const {
+        std::size_t n = 0;
+        for (int i = d + 1; i < 256; ++i) n += count[i];
+        return n;
+    }
+};
+
+DiffHistogram diffHistogram(const facet::Framebuffer& gl, const facet::reference::Image& ref,
+                            ShaderKind shader, std::uint32_t backgroundHex) {
+    DiffHistogram h;
+    const std::vector<std::uint32_t> refRgba = ref.toRgba();
+    const std::uint32_t background = facet::rgbaFromHex(backgroundHex);
+    for (std::size_t i = 0; i < refRgba.size(); ++i) {
+        if (ref.ambiguous[i]) continue;
+        const bool byColour = shader == ShaderKind::Simple;
+        const bool refCovered = byColour ? refRgba[i] != background : std::isfinite(ref.depth[i]);
+        const bool glCovered = byColour ? gl.color[i] != background : std::isfinite(gl.depth[i]);
+        if (!refCovered || !glCovered) continue;
+        ++h.count[static_cast<std::size_t>(facet::test::channelDiff(refRgba[i], gl.color[i]))];
+        ++h.total;
+    }
+    return h;
+}
+
+class GlVsReference : public testing::TestWithParam<Case> {};
+
+TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
+    Twin& t = twin();
+    if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
+    const Case& c = GetParam();
+    if (!std::filesystem::exists(std::string(FACET_SHARED_DIR) + "/data/" + c.scene + ".scene"))
+        GTEST_SKIP() << "shared data not found: " << c.scene;
+    std::string error;
+    const facet::Scene* loaded = loadCached(c.scene, error);
+    ASSERT_NE(loaded, nullptr) << error;
+    facet::Scene moved;
+    const facet::Scene* scene = loaded;
+    if (c.dolly != 1.0) {
+        moved = *loaded;
+        moved.camera.eye = moved.camera.look + c.dolly * (moved.camera.eye - moved.camera.look);
+        scene = &moved;
+    }
+
+    facet::RenderSettings settings;
+    settings.mode = c.mode;
+    settings.shader = c.shader;
+    settings.interp = c.interp;
+    settings.lighting = c.lighting;
+    settings.filter = c.filter;
+    settings.combine = c.combine;
+    settings.cullBackFaces = c.cull;
+    settings.showNormals = c.normals;
+
+    facet::Framebuffer gl;
+    const facet::Result<facet::GlStats> stats = t.renderer->render(*scene, settings, gl);
+    ASSERT_TRUE(stats.ok()) << stats.error().what();
+    const facet::reference::Image ref = facet::reference::render(*scene, settings);
+    ASSERT_EQ(gl.width, ref.width);
+    ASSERT_EQ(gl.height, ref.height);
+
+    const facet::test::Comparison r = facet::test::compare(gl, ref, c.shader, settings.background);
+    const DiffHistogram h = diffHistogram(gl, ref, c.shader, settings.background);
+    const double coverage = static_cast<double>(r.coverageDiffers) /
+                            static_cast<double>(std::max<std::size_t>(1, r.covered));
+    const double over1 =
+        static_cast<double>(h.above(1)) / static_cast<double>(std::max<std::size_t>(1, h.total));
+    const std::string name = caseName(c);
+    std::printf(
+        "[gl-vs-ref] %-46s covered=%zu ambiguous=%zu differing=%zu (%.4f%%) diff "
+        "p50/p99/p99.9/max=%d/%d/%d/%d over1=%.3f%%\n",
+        name.c_str(), r.covered, r.ambiguous, r.coverageDiffers, 100.0 * coverage,
+        h.percentile(0.5), h.percentile(0.99), h.percentile(0.999), h.max(), 100.0 * over1);
+    const Tolerance& tolerance = toleranceFor(c);
+    EXPECT_LE(coverage, tolerance.coverage) << name << r.examples;
+    EXPECT_LE(h.percentile(0.99), tolerance.p99) << name << r.examples;
+    EXPECT_LE(h.max(), tolerance.max) << name << r.examples;
+    EXPECT_LE(over1, tolerance.over1) << name << r.examples;
+}
+
+std::string paramName(const testing::TestParamInfo<Case>& param) {
+    return caseName(param.param);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, GlVsReference, testing::ValuesIn(allCases()), paramName);
+
+facet::Framebuffer renderTwin(facet::GlRenderer& renderer, const facet::Scene& scene) {
+    facet::Framebuffer frame;
+    const facet::Result<facet::GlStats> stats =
+        renderer.render(scene, facet::RenderSettings{}, frame);
+    EXPECT_TRUE(stats.ok()) << stats.error().what();
+    return frame;
+}
+
+// The viewer will share its window's context with the twin: a render must neither depend on
+// the state the caller left nor change it.
+TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
+    Twin& t = twin();
+    if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
+    std::string error;
+    const facet::Scene* scene = loadCached("course/example2", error);
+    if (!scene) GTEST_SKIP() << error;
+    const facet::Framebuffer clean = renderTwin(*t.renderer, *scene);
+
+    glViewport(1, 2, 3, 4);
+    glEnable(GL_BLEND);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 1, 1);
+    glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+    glDepthFunc(GL_LEQUAL);
+    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
+    const facet::Framebuffer dirty = renderTwin(*t.renderer, *scene);
+    EXPECT_TRUE(dirty.color == clean.color && dirty.depth == clean.depth);
+
+    GLint viewport[4] = {}, depthFunc = 0, clipDepth = 0, framebuffer = -1;
+    GLfloat clear[4] = {};
+    GLboolean mask[4] = {};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+    glGetIntegerv(GL_CLIP_DEPTH_MODE, &clipDepth);
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+    glGetBooleanv(GL_COLOR_WRITEMASK, mask);
+    EXPECT_EQ(std::vector<GLint>(viewport, viewport + 4), (std::vector<GLint>{1, 2, 3, 4}));
+    EXPECT_TRUE(glIsEnabled(GL_BLEND) && glIsEnabled(GL_SCISSOR_TEST));
+    EXPECT_FALSE(glIsEnabled(GL_DEPTH_TEST) || glIsEnabled(GL_CULL_FACE));
+    EXPECT_EQ(depthFunc, GL_LEQUAL);
+    EXPECT_EQ(clipDepth, GL_NEGATIVE_ONE_TO_ONE);
+    EXPECT_EQ(framebuffer, 0);
+    EXPECT_EQ(clear[2], 0.75f);
+    EXPECT_EQ(mask[1], GL_FALSE);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+// A second context with its own renderer draws the same picture; the first works on after.
+TEST(GlTwinContext, ASecondContextDrawsTheSamePicture) {
+    Twin& t = twin();
+    if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
+    std::string error;
+    const facet::Scene* scene = loadCached("course/example1", error);
+    if (!scene) GTEST_SKIP() << error;
+    const facet::Framebuffer first = renderTwin(*t.renderer, *scene);
+    {
+        facet::Result<facet::GlContext> other = facet::GlContext::createHeadless();
+        ASSERT_TRUE(other.ok()) << other.error().what();
+        facet::Result<facet::GlRenderer> renderer = facet::GlRenderer::create();
+        ASSERT_TRUE(renderer.ok()) << renderer.error().what();
+        EXPECT_TRUE(renderTwin(*renderer, *scene).color == first.color);
+    }  // the renderer goes first, while its context is still current
+    ASSERT_FALSE(t.context->makeCurrent().has_value());
+    EXPECT_TRUE(renderTwin(*t.renderer, *scene).color == first.color);
+}
+
+// `facet render-gl` as a user runs it: a PNG and the median time of the frames.
+TEST(GlTwinCli, RenderGlWritesThePngAndTheMedianTime) {
+    if (!twin().renderer) GTEST_SKIP() << "no OpenGL context: " << twin().whyNot;
+    const std::string scene = std::string(FACET_SHARED_DIR) + "/data/course/example0.scene";
+    if (!std::filesystem::exists(scene)) GTEST_SKIP() << "shared data not found";
+    const std::filesystem::path png = std::filesystem::temp_directory_path() /
+                                      ("facet_gl_twin_" + std::to_string(::getpid()) + ".png");
+    const std::string cmd = std::string(FACET_CLI) + " render-gl " + scene + " -o " + png.string() +
+                            " --lighting gouraud --frames 3 2>&1";
+    std::string out;
+    FILE* p = popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    char line[512];
+    while (std::fgets(line, sizeof line, p)) out += line;
+    const int status = pclose(p);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+    EXPECT_NE(out.find("median "), std::string::npos) << out;
+    EXPECT_TRUE(std::filesystem::exists(png)) << out;
+    std::filesystem::remove(png);
+}
+
+}  // namespace
