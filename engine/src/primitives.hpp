@@ -178,7 +178,8 @@ void drawPoints(const DrawInput& in, int pointSize, Framebuffer& fb, const DrawC
             for (int xx = std::max(0, px + lo); xx <= std::min(fb.width - 1, px + hi); ++xx) {
                 ++stats.fragments;
                 const std::size_t j = fb.index(xx, yy);
-                if (passesDepth<V::kShader>(fb, j, p.w)) storeFragment<V::kShader>(fb, j, p.w, color);
+                if (passesDepth<V::kShader>(fb, j, p.w))
+                    storeFragment<V::kShader>(fb, j, p.w, color);
             }
     }
 }

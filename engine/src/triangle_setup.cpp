@@ -29,8 +29,8 @@ void setPlane(float (&dst)[3], double c, double a, double b) {
 }
 
 /// Builds the planes; returns false for a degenerate triangle.
-bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int count, int baseX,
-                int baseY, Planes& p) {
+bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int count, int baseX, int baseY,
+                Planes& p) {
     const double area = signedArea2(s);
     if (!(area != 0.0) || !std::isfinite(area)) return false;
     const double bx = baseX + 0.5, by = baseY + 0.5;
