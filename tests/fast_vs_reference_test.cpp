@@ -31,6 +31,7 @@
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
 #include "image_compare.hpp"
+#include "scene_cases.hpp"
 
 namespace {
 
@@ -38,48 +39,9 @@ using facet::DrawMode;
 using facet::Interp;
 using facet::ShaderKind;
 
-struct Case {
-    std::string scene;  ///< path relative to FACET_SHARED_DIR/data, without ".scene"
-    DrawMode mode;
-    ShaderKind shader;
-    Interp interp;
-    bool cull;
-    double dolly = 1.0;  ///< eye moved to look + dolly·(eye - look): < 1 moves in, clips
-    facet::Lighting lighting = facet::Lighting::Off;
-    facet::TextureFilter filter = facet::TextureFilter::Bilinear;
-    bool combine = false;
-    bool normals = false;
-    int subdivision = 8;
-};
-
-/// The course's textured facet names no texture; the course pairs it with the brick image.
-std::string textureFor(const std::string& scene) {
-    return scene == "course/example_textured" ? "course/brick.jpg" : "";
-}
-
-std::string caseName(const Case& c) {
-    std::string name = std::filesystem::path(c.scene).filename().string();
-    // Appends one piece at a time: GCC 12 warns falsely (-Wrestrict) on "_" + std::string.
-    for (const std::string_view part :
-         {facet::toString(c.mode), facet::toString(c.shader), facet::toString(c.interp)}) {
-        name += '_';
-        name += part;
-    }
-    if (c.interp == Interp::Subdivided) name += std::to_string(c.subdivision);
-    if (c.cull) name += "_cull";
-    if (c.lighting != facet::Lighting::Off) {
-        name += '_';
-        name += facet::toString(c.lighting);
-    }
-    if (c.shader == ShaderKind::Texture) {
-        name += '_';
-        name += facet::toString(c.filter);
-        if (c.combine) name += "_combine";
-    }
-    if (c.normals) name += "_normals";
-    if (c.dolly != 1.0) name += "_dolly" + std::to_string(static_cast<int>(c.dolly * 1000));
-    return name;
-}
+using facet::Lighting;
+using facet::TextureFilter;
+using Case = facet::test::SceneCase;
 
 // Every combination on every scene: in a Release build the whole file takes seconds.
 std::vector<Case> allCases() {
@@ -93,9 +55,14 @@ std::vector<Case> allCases() {
             for (const ShaderKind shader :
                  {ShaderKind::Simple, ShaderKind::Painter, ShaderKind::Depth}) {
                 for (const Interp interp : {Interp::Affine, Interp::Perspective}) {
-                    cases.push_back({scene, mode, shader, interp, false});
+                    cases.push_back(
+                        {.scene = scene, .mode = mode, .shader = shader, .interp = interp});
                     if (mode == DrawMode::Solid)
-                        cases.push_back({scene, mode, shader, interp, true});
+                        cases.push_back({.scene = scene,
+                                         .mode = mode,
+                                         .shader = shader,
+                                         .interp = interp,
+                                         .cull = true});
                 }
             }
         }
@@ -104,48 +71,59 @@ std::vector<Case> allCases() {
     for (const std::string& scene : scenes)
         for (const DrawMode mode : {DrawMode::Vertices, DrawMode::Wireframe, DrawMode::Solid})
             for (const Interp interp : {Interp::Affine, Interp::Perspective})
-                cases.push_back({scene, mode, ShaderKind::Painter, interp, false, 1.0,
-                                 facet::Lighting::Gouraud});
+                cases.push_back({.scene = scene,
+                                 .mode = mode,
+                                 .interp = interp,
+                                 .lighting = Lighting::Gouraud});
     // Phong: per-pixel lighting through every mode; subdivided colour interpolation.
     for (const std::string& scene : scenes) {
         for (const DrawMode mode : {DrawMode::Vertices, DrawMode::Wireframe, DrawMode::Solid})
-            cases.push_back({scene, mode, ShaderKind::Painter, Interp::Perspective, false, 1.0,
-                             facet::Lighting::Phong});
-        cases.push_back({scene, DrawMode::Solid, ShaderKind::Painter, Interp::Affine, false, 1.0,
-                         facet::Lighting::Phong});
-        cases.push_back({scene, DrawMode::Solid, ShaderKind::Painter, Interp::Subdivided, false});
-        cases.push_back({scene, DrawMode::Solid, ShaderKind::Painter, Interp::Subdivided, false,
-                         1.0, facet::Lighting::Gouraud, facet::TextureFilter::Bilinear, false,
-                         false, 32});
+            cases.push_back({.scene = scene, .mode = mode, .lighting = Lighting::Phong});
+        cases.push_back({.scene = scene, .interp = Interp::Affine, .lighting = Lighting::Phong});
+        cases.push_back({.scene = scene, .interp = Interp::Subdivided});
+        cases.push_back({.scene = scene,
+                         .interp = Interp::Subdivided,
+                         .lighting = Lighting::Gouraud,
+                         .subdivision = 32});
     }
     // Textures on the textured scenes: every filter × interpolation, then combined with each
     // lighting, lines and points.
-    using facet::Lighting;
-    using facet::TextureFilter;
     for (const std::string scene :
          {"course/example_textured", "scenes/spot_1280x720", "scenes/spot_1920x1080"}) {
         for (const TextureFilter filter :
              {TextureFilter::Nearest, TextureFilter::Bilinear, TextureFilter::Trilinear})
             for (const Interp interp : {Interp::Affine, Interp::Subdivided, Interp::Perspective})
-                cases.push_back({scene, DrawMode::Solid, ShaderKind::Texture, interp, false, 1.0,
-                                 Lighting::Off, filter});
+                cases.push_back({.scene = scene,
+                                 .shader = ShaderKind::Texture,
+                                 .interp = interp,
+                                 .filter = filter});
         for (const Lighting lighting : {Lighting::Off, Lighting::Gouraud, Lighting::Phong})
-            cases.push_back({scene, DrawMode::Solid, ShaderKind::Texture, Interp::Perspective,
-                             false, 1.0, lighting, TextureFilter::Trilinear, true});
+            cases.push_back({.scene = scene,
+                             .shader = ShaderKind::Texture,
+                             .lighting = lighting,
+                             .filter = TextureFilter::Trilinear,
+                             .combine = true});
         for (const DrawMode mode : {DrawMode::Vertices, DrawMode::Wireframe})
-            cases.push_back({scene, mode, ShaderKind::Texture, Interp::Perspective, false, 1.0,
-                             Lighting::Phong, TextureFilter::Bilinear, true});
+            cases.push_back({.scene = scene,
+                             .mode = mode,
+                             .shader = ShaderKind::Texture,
+                             .lighting = Lighting::Phong,
+                             .combine = true});
     }
     // The normals display over each shader.
     for (const char* scene : {"course/example2", "scenes/bunny_1280x720"})
         for (const ShaderKind shader : {ShaderKind::Simple, ShaderKind::Painter, ShaderKind::Depth})
-            cases.push_back({scene, DrawMode::Solid, shader, Interp::Perspective, false, 1.0,
-                             Lighting::Off, TextureFilter::Bilinear, false, true});
+            cases.push_back({.scene = scene, .shader = shader, .normals = true});
     // Close-ups of the lit, textured cow: clipped triangles with every varying.
     for (const double dolly : {0.3, 0.1})
         for (const Interp interp : {Interp::Affine, Interp::Subdivided, Interp::Perspective})
-            cases.push_back({"scenes/spot_1280x720", DrawMode::Solid, ShaderKind::Texture, interp,
-                             false, dolly, Lighting::Phong, TextureFilter::Trilinear, true});
+            cases.push_back({.scene = "scenes/spot_1280x720",
+                             .shader = ShaderKind::Texture,
+                             .interp = interp,
+                             .lighting = Lighting::Phong,
+                             .filter = TextureFilter::Trilinear,
+                             .combine = true,
+                             .dolly = dolly});
     // Close-ups with the eye near or inside the mesh: geometry crosses the near plane and runs
     // far beyond the image (near clipping, guard band, very long lines).
     for (const char* scene : {"course/example2", "scenes/bunny_1280x720", "scenes/spot_1280x720"}) {
@@ -153,7 +131,11 @@ std::vector<Case> allCases() {
             for (const Interp interp : {Interp::Affine, Interp::Perspective}) {
                 for (const DrawMode mode : {DrawMode::Wireframe, DrawMode::Solid}) {
                     for (const ShaderKind shader : {ShaderKind::Painter, ShaderKind::Depth}) {
-                        cases.push_back({scene, mode, shader, interp, false, dolly});
+                        cases.push_back({.scene = scene,
+                                         .mode = mode,
+                                         .shader = shader,
+                                         .interp = interp,
+                                         .dolly = dolly});
                     }
                 }
             }
@@ -162,64 +144,18 @@ std::vector<Case> allCases() {
     return cases;
 }
 
-std::string scenePath(const std::string& name) {
-    return std::string(FACET_SHARED_DIR) + "/data/" + name + ".scene";
-}
-
-// Scenes are loaded once and shared by all their cases (the bunny OBJ is the slow part).
-const facet::Scene* loadCached(const std::string& path, std::string& error) {
-    static std::map<std::string, std::unique_ptr<facet::Scene>> cache;
-    auto it = cache.find(path);
-    if (it == cache.end()) {
-        facet::Result<facet::Scene> loaded = facet::loadScene(path);
-        if (!loaded.ok()) {
-            error = loaded.error().what();
-            return nullptr;
-        }
-        it = cache.emplace(path, std::make_unique<facet::Scene>(std::move(loaded).value())).first;
-    }
-    return it->second.get();
-}
-
-// Names the case in gtest's messages instead of dumping its bytes.
-void PrintTo(const Case& c, std::ostream* os) {
-    *os << caseName(c);
-}
-
 class FastVsReference : public testing::TestWithParam<Case> {};
 
 TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     const Case& c = GetParam();
-    const std::string path = scenePath(c.scene);
+    const std::string path = facet::test::sharedScenePath(c.scene);
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data not found: " << path;
     std::string error;
-    const facet::Scene* loaded = loadCached(path, error);
+    const facet::Scene* loaded = facet::test::loadCached(c.scene, error);
     ASSERT_NE(loaded, nullptr) << error;
-    facet::Scene changed;
-    const facet::Scene* scene = loaded;
-    if (c.dolly != 1.0 || (c.shader == ShaderKind::Texture && !textureFor(c.scene).empty())) {
-        changed = *loaded;
-        facet::Camera& cam = changed.camera;
-        cam.eye = cam.look + c.dolly * (cam.eye - cam.look);
-        if (c.shader == ShaderKind::Texture && !textureFor(c.scene).empty()) {
-            const std::string image =
-                std::string(FACET_SHARED_DIR) + "/data/" + textureFor(c.scene);
-            const facet::Status st = facet::loadSceneTexture(changed, image);
-            ASSERT_FALSE(st.has_value()) << st->what();
-        }
-        scene = &changed;
-    }
-
-    facet::RenderSettings settings;
-    settings.mode = c.mode;
-    settings.shader = c.shader;
-    settings.interp = c.interp;
-    settings.cullBackFaces = c.cull;
-    settings.lighting = c.lighting;
-    settings.filter = c.filter;
-    settings.combine = c.combine;
-    settings.showNormals = c.normals;
-    settings.subdivision = c.subdivision;
+    facet::Scene storage;
+    const facet::Scene* scene = facet::test::dollied(loaded, c.dolly, storage);
+    const facet::RenderSettings settings = facet::test::settingsFor(c);
 
     const facet::reference::Image ref = facet::reference::render(*scene, settings);
     facet::Renderer renderer;
@@ -230,7 +166,7 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
 
     const facet::test::Comparison r =
         facet::test::compare(fast, ref, c.shader, settings.background);
-    const std::string name = caseName(c);
+    const std::string name = facet::test::caseName(c);
     std::printf(
         "[fast-vs-ref] %-44s compared=%zu covered=%zu ambiguous=%zu differing=%zu "
         "maxdiff=%d offby1=%zu clipped=%zu\n",
@@ -245,7 +181,7 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
 }
 
 std::string paramName(const testing::TestParamInfo<Case>& param) {
-    return caseName(param.param);
+    return facet::test::caseName(param.param);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FastVsReference, testing::ValuesIn(allCases()), paramName);

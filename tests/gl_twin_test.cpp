@@ -37,6 +37,7 @@
 #include "gl_context.hpp"
 #include "gl_renderer.hpp"
 #include "image_compare.hpp"
+#include "scene_cases.hpp"
 
 namespace {
 
@@ -113,50 +114,13 @@ constexpr Tolerance kLines{.coverage = 0.002, .p99 = 1, .max = 255, .over1 = 0.0
 /// Measured coverage mismatches at most 1.19%.
 constexpr Tolerance kClippedLines{.coverage = 0.02, .p99 = 1, .max = 255, .over1 = 0.001};
 
-struct Case {
-    std::string scene;  ///< under FACET_SHARED_DIR/data, without ".scene"
-    DrawMode mode = DrawMode::Solid;
-    ShaderKind shader = ShaderKind::Painter;
-    Interp interp = Interp::Perspective;
-    Lighting lighting = Lighting::Off;
-    TextureFilter filter = TextureFilter::Bilinear;
-    bool combine = false;
-    bool cull = false;
-    bool normals = false;
-    double dolly = 1.0;  ///< eye moved to look + dolly·(eye − look): < 1 moves in, clips
-};
+using Case = facet::test::SceneCase;
 
 const Tolerance& toleranceFor(const Case& c) {
     if (c.mode == DrawMode::Wireframe) return c.dolly < 1.0 ? kClippedLines : kLines;
     if (c.normals) return kLines;
     if (c.shader == ShaderKind::Texture && c.filter == TextureFilter::Trilinear) return kTrilinear;
     return kTriangles;
-}
-
-std::string caseName(const Case& c) {
-    std::string name = std::filesystem::path(c.scene).filename().string();
-    for (const std::string_view part :
-         {facet::toString(c.mode), facet::toString(c.shader), facet::toString(c.interp)}) {
-        name += '_';
-        name += part;
-    }
-    if (c.lighting != Lighting::Off) {
-        name += '_';
-        name += facet::toString(c.lighting);
-    }
-    if (c.shader == ShaderKind::Texture) {
-        name += '_';
-        name += facet::toString(c.filter);
-        if (c.combine) name += "_combine";
-    }
-    if (c.cull) name += "_cull";
-    if (c.normals) name += "_normals";
-    if (c.dolly != 1.0) name += "_dolly" + std::to_string(static_cast<int>(c.dolly * 1000));
-    return name;
-}
-
-void PrintTo(const Case& c, std::ostream* os) {
-    *os << caseName(c);
 }
 
 std::vector<Case> allCases() {
@@ -207,31 +171,6 @@ std::vector<Case> allCases() {
         cases.push_back({.scene = "scenes/bunny_1280x720", .lighting = lighting});
     cases.push_back({.scene = "scenes/bunny_1280x720", .shader = ShaderKind::Depth});
     return cases;
-}
-
-/// The course's textured facet names no texture; the course pairs it with the brick image.
-std::string textureFor(const std::string& scene) {
-    return scene == "course/example_textured" ? "course/brick.jpg" : "";
-}
-
-const facet::Scene* loadCached(const std::string& name, std::string& error) {
-    static std::map<std::string, std::unique_ptr<facet::Scene>> cache;
-    auto it = cache.find(name);
-    if (it != cache.end()) return it->second.get();
-    const std::string data = std::string(FACET_SHARED_DIR) + "/data/";
-    facet::Result<facet::Scene> loaded = facet::loadScene(data + name + ".scene");
-    if (!loaded) {
-        error = loaded.error().what();
-        return nullptr;
-    }
-    auto scene = std::make_unique<facet::Scene>(std::move(loaded).value());
-    if (!textureFor(name).empty()) {
-        if (facet::Status st = facet::loadSceneTexture(*scene, data + textureFor(name))) {
-            error = st->what();
-            return nullptr;
-        }
-    }
-    return cache.emplace(name, std::move(scene)).first->second.get();
 }
 
 /// Colour differences over the unambiguous pixels both images drew, as a histogram.
@@ -285,28 +224,14 @@ TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
     Twin& t = twin();
     if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
     const Case& c = GetParam();
-    if (!std::filesystem::exists(std::string(FACET_SHARED_DIR) + "/data/" + c.scene + ".scene"))
+    if (!std::filesystem::exists(facet::test::sharedScenePath(c.scene)))
         GTEST_SKIP() << "shared data not found: " << c.scene;
     std::string error;
-    const facet::Scene* loaded = loadCached(c.scene, error);
+    const facet::Scene* loaded = facet::test::loadCached(c.scene, error);
     ASSERT_NE(loaded, nullptr) << error;
-    facet::Scene moved;
-    const facet::Scene* scene = loaded;
-    if (c.dolly != 1.0) {
-        moved = *loaded;
-        moved.camera.eye = moved.camera.look + c.dolly * (moved.camera.eye - moved.camera.look);
-        scene = &moved;
-    }
-
-    facet::RenderSettings settings;
-    settings.mode = c.mode;
-    settings.shader = c.shader;
-    settings.interp = c.interp;
-    settings.lighting = c.lighting;
-    settings.filter = c.filter;
-    settings.combine = c.combine;
-    settings.cullBackFaces = c.cull;
-    settings.showNormals = c.normals;
+    facet::Scene storage;
+    const facet::Scene* scene = facet::test::dollied(loaded, c.dolly, storage);
+    const facet::RenderSettings settings = facet::test::settingsFor(c);
 
     facet::Framebuffer gl;
     const facet::Result<facet::GlStats> stats = t.renderer->render(*scene, settings, gl);
@@ -321,7 +246,7 @@ TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
                             static_cast<double>(std::max<std::size_t>(1, r.covered));
     const double over1 =
         static_cast<double>(h.above(1)) / static_cast<double>(std::max<std::size_t>(1, h.total));
-    const std::string name = caseName(c);
+    const std::string name = facet::test::caseName(c);
     std::printf(
         "[gl-vs-ref] %-46s covered=%zu ambiguous=%zu differing=%zu (%.4f%%) diff "
         "p50/p99/p99.9/max=%d/%d/%d/%d over1=%.3f%%\n",
@@ -335,7 +260,7 @@ TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
 }
 
 std::string paramName(const testing::TestParamInfo<Case>& param) {
-    return caseName(param.param);
+    return facet::test::caseName(param.param);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GlVsReference, testing::ValuesIn(allCases()), paramName);
@@ -354,7 +279,7 @@ TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
     Twin& t = twin();
     if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
     std::string error;
-    const facet::Scene* scene = loadCached("course/example2", error);
+    const facet::Scene* scene = facet::test::loadCached("course/example2", error);
     if (!scene) GTEST_SKIP() << error;
     const facet::Framebuffer clean = renderTwin(*t.renderer, *scene);
 
@@ -395,7 +320,7 @@ TEST(GlTwinContext, ASecondContextDrawsTheSamePicture) {
     Twin& t = twin();
     if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
     std::string error;
-    const facet::Scene* scene = loadCached("course/example1", error);
+    const facet::Scene* scene = facet::test::loadCached("course/example1", error);
     if (!scene) GTEST_SKIP() << error;
     const facet::Framebuffer first = renderTwin(*t.renderer, *scene);
     {

@@ -17,16 +17,6 @@
 #include "viewer_app.hpp"
 
 namespace facet::view {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-}  // namespace
-
 int App::frame(Clock::time_point start, bool last) {
     int status = 0;
     const auto tEvents = Clock::now();

@@ -2,11 +2,20 @@
 // Frame timing: each frame's time split into stages, a rolling history for the plot, and the
 // medians printed by --fps-report.
 
+#include <chrono>
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace facet::view {
+
+/// The clock every stage is timed with.
+using Clock = std::chrono::steady_clock;
+
+/// Milliseconds from a to b.
+inline double ms(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
 
 /// Milliseconds one frame spent in each stage.
 struct FrameTimes {

@@ -3,17 +3,9 @@
 #include <chrono>
 #include <utility>
 
+#include "frame_stats.hpp"
+
 namespace facet::view {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-}  // namespace
-
 RenderWorker::RenderWorker() : thread_([this] { loop(); }) {}
 
 RenderWorker::~RenderWorker() {

@@ -93,8 +93,10 @@ void rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& 
             // analytic derivative of the perspective-correct weights otherwise.
             float w1x = p.l1[1], w1y = p.l1[2], w2x = p.l2[1], w2y = p.l2[2];
             if constexpr (V::kInterp != Interp::Affine) {
-                const float pm1 = Planes::eval(p.u1, dx, dy) * depth;
-                const float pm2 = Planes::eval(p.u2, dx, dy) * depth;
+                // The perspective weights at this pixel: already m1, m2 unless subdivided.
+                constexpr bool exact = V::kInterp == Interp::Perspective;
+                const float pm1 = exact ? m1 : Planes::eval(p.u1, dx, dy) * depth;
+                const float pm2 = exact ? m2 : Planes::eval(p.u2, dx, dy) * depth;
                 w1x = (p.u1[1] - pm1 * p.q[1]) * depth;
                 w1y = (p.u1[2] - pm1 * p.q[2]) * depth;
                 w2x = (p.u2[1] - pm2 * p.q[1]) * depth;

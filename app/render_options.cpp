@@ -1,0 +1,147 @@
+#include "render_options.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <optional>
+
+#include "commands.hpp"
+#include "facet/scene_io.hpp"
+
+namespace facet::app {
+namespace {
+
+/// Parses "WxH" into positive integers within the scene limits.
+bool parseSize(const std::string& text, int& w, int& h) {
+    const auto x = text.find_first_of("xX");
+    if (x == std::string::npos) return false;
+    const char* b = text.data();
+    const char* e = b + text.size();
+    auto r1 = std::from_chars(b, b + x, w);
+    auto r2 = std::from_chars(b + x + 1, e, h);
+    return r1.ec == std::errc{} && r1.ptr == b + x && r2.ec == std::errc{} && r2.ptr == e &&
+           w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
+}
+
+/// Parses RRGGBB (an optional leading # or 0x is accepted).
+bool parseHexColor(std::string text, std::uint32_t& rgb) {
+    if (text.rfind("#", 0) == 0) text.erase(0, 1);
+    if (text.rfind("0x", 0) == 0 || text.rfind("0X", 0) == 0) text.erase(0, 2);
+    if (text.size() != 6) return false;
+    auto r = std::from_chars(text.data(), text.data() + 6, rgb, 16);
+    return r.ec == std::errc{} && r.ptr == text.data() + 6;
+}
+
+/// The engine's names for a setting, as CLI11 wants them; one list serves parsing and --help.
+std::vector<std::string> choices(const std::vector<std::string_view>& names) {
+    return {names.begin(), names.end()};
+}
+
+}  // namespace
+
+void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interpHelp) {
+    cmd.add_option("scene", o.scene, "The .scene file")->required();
+    cmd.add_option("-o,--output", o.output, "Output PNG path")->required();
+    cmd.add_option("--mode", o.mode, "Draw mode")
+        ->check(CLI::IsMember(choices(drawModeNames())))
+        ->capture_default_str();
+    cmd.add_option("--shader", o.shader, "Shader")
+        ->check(CLI::IsMember(choices(shaderNames())))
+        ->capture_default_str();
+    cmd.add_option("--interp", o.interp, interpHelp)->capture_default_str();
+    cmd.add_option("--lighting", o.lighting,
+                   "Lighting: off, gouraud (per vertex) or phong (per pixel)")
+        ->check(CLI::IsMember(choices(lightingNames())))
+        ->capture_default_str();
+    cmd.add_option("--texture", o.texture,
+                   "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's");
+    cmd.add_option("--filter", o.filter, "Texture filter")
+        ->check(CLI::IsMember(choices(filterNames())))
+        ->capture_default_str();
+    cmd.add_flag("--combine", o.combine,
+                 "Texture shader: multiply the texel by the (lit) vertex colour");
+    cmd.add_flag("--normals", o.normals, "Draw vertex normals as red segments");
+    cmd.add_flag("--legend", o.legend,
+                 "Depth shader: draw a legend bar with the near and far depth it maps");
+    cmd.add_option("--normal-length", o.normalLength,
+                   "Length of the normal segments in world units (implies --normals; default: "
+                   "bounding-box diagonal / 100)")
+        ->check(CLI::PositiveNumber);
+    cmd.add_flag("--cull", o.cull, "Drop back-facing triangles");
+    cmd.add_option("--size", o.size, "Image size WxH (focal length scales with the width)");
+    cmd.add_option("--background", o.background, "Background colour, hex RRGGBB")
+        ->capture_default_str();
+    cmd.add_option("--near", o.nearPlane, "Near plane distance (default: 1/1000 of the mesh size)")
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option("--point-size", o.pointSize, "Side of the vertex squares in pixels")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
+    cmd.add_option("--frames", o.frames, "Render N frames and print the median time")
+        ->check(CLI::Range(1, 100000));
+    cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
+}
+
+int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
+                  RenderSettings& settings) {
+    auto bad = [command](const std::string& message) {
+        std::fprintf(stderr, "%s: %s\n", command, message.c_str());
+        return kBadInput;
+    };
+    // CLI11 has already checked the names against the engine's lists (choices above).
+    settings.mode = *parseDrawMode(o.mode);
+    settings.shader = *parseShader(o.shader);
+    const std::optional<InterpSpec> interp = parseInterpSpec(o.interp);
+    if (!interp)
+        return bad("--interp wants affine, perspective, subdivided or subdivided:N (N in 2.." +
+                   std::to_string(kMaxSubdivision) + "), got '" + o.interp + "'");
+    settings.interp = interp->interp;
+    settings.subdivision = interp->subdivision;
+    settings.lighting = *parseLighting(o.lighting);
+    settings.filter = *parseFilter(o.filter);
+    settings.combine = o.combine;
+    settings.showNormals = o.normals || o.normalLength > 0.0;
+    settings.normalLength = o.normalLength;
+    settings.depthLegend = o.legend;
+    settings.cullBackFaces = o.cull;
+    settings.nearPlane = o.nearPlane;
+    settings.pointSize = o.pointSize;
+    if (!parseHexColor(o.background, settings.background))
+        return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
+
+    Result<Scene> loaded = loadScene(o.scene);
+    if (!loaded) return bad(loaded.error().what());
+    scene = std::move(loaded).value();
+    if (!o.texture.empty()) {
+        if (Status st = loadSceneTexture(scene, o.texture)) return bad(st->what());
+    }
+    if (settings.shader == ShaderKind::Texture && !scene.texture)
+        return bad(o.scene +
+                   ": the texture shader needs a texture: the scene names none (line 10 "
+                   "or an OBJ map_Kd); give one with --texture IMAGE");
+    if (settings.shader == ShaderKind::Texture && !scene.mesh.hasUvs())
+        std::fprintf(stderr,
+                     "%s: warning: %s has no texture coordinates; every pixel samples "
+                     "uv = (0, 0)\n",
+                     command, scene.meshPath.c_str());
+    if (!o.size.empty()) {
+        int w = 0, h = 0;
+        if (!parseSize(o.size, w, h))
+            return bad("--size wants WxH with 1..16384 each, got '" + o.size + "'");
+        // Scaling f with the width keeps the horizontal field of view.
+        scene.camera.focal *= static_cast<double>(w) / scene.camera.width;
+        scene.camera.width = w;
+        scene.camera.height = h;
+    }
+    return kOk;
+}
+
+void printFrameTimes(std::vector<double> ms) {
+    if (ms.size() < 2) return;
+    std::sort(ms.begin(), ms.end());
+    const std::size_t n = ms.size();
+    const double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+    std::printf("median %.3f ms (min %.3f, max %.3f) over %zu frames\n", median, ms.front(),
+                ms.back(), n);
+}
+
+}  // namespace facet::app

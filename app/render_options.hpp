@@ -1,0 +1,50 @@
+#pragma once
+// The options `facet render` and `facet render-gl` share: one list registered on both
+// sub-commands, one function that turns them into a loaded scene and RenderSettings, and one
+// timing summary, so the two commands draw the same picture from the same command line.
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "facet/scene.hpp"
+#include "facet/settings.hpp"
+
+namespace facet::app {
+
+/// The shared options as the user typed them.
+struct RenderOptions {
+    std::string scene;
+    std::string output;
+    std::string mode = "solid";
+    std::string shader = "painter";
+    std::string interp = "perspective";
+    std::string lighting = "off";
+    std::string filter = "bilinear";
+    std::string texture;
+    std::string size;
+    std::string background = "5C5C5C";
+    bool cull = false;
+    bool combine = false;
+    bool normals = false;
+    double normalLength = 0.0;
+    bool legend = false;
+    bool stats = false;
+    double nearPlane = 0.0;
+    int pointSize = 5;
+    int frames = 1;
+};
+
+/// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.
+void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& interpHelp);
+
+/// Loads the scene (and --texture), applies --size and fills `settings`. On bad input prints one
+/// line prefixed with `command` on stderr and returns kBadInput; kOk otherwise.
+int prepareRender(const RenderOptions& options, const char* command, Scene& scene,
+                  RenderSettings& settings);
+
+/// Prints `median X ms (min, max) over N frames` when more than one frame was timed.
+void printFrameTimes(std::vector<double> ms);
+
+}  // namespace facet::app
