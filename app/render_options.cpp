@@ -78,6 +78,11 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
         ->capture_default_str();
     cmd.add_option("--frames", o.frames, "Render N frames and print the median time")
         ->check(CLI::Range(1, 100000));
+    cmd.add_option("--threads", o.threads,
+                   "Worker threads for the CPU engine (0: all cores; the OpenGL twin uses "
+                   "LP_NUM_THREADS instead)")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str();
     cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
 }
 
@@ -105,6 +110,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.cullBackFaces = o.cull;
     settings.nearPlane = o.nearPlane;
     settings.pointSize = o.pointSize;
+    settings.threads = o.threads;
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 

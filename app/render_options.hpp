@@ -34,6 +34,7 @@ struct RenderOptions {
     double nearPlane = 0.0;
     int pointSize = 5;
     int frames = 1;
+    int threads = 0;
 };
 
 /// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.

@@ -50,6 +50,7 @@ struct RenderSettings {
     std::uint32_t background = 0x5C5C5C;  ///< 0xRRGGBB, the course's grey
     int pointSize = 5;                    ///< side of the vertex squares, in pixels
     double nearPlane = 0.0;               ///< camera-space near distance; <= 0 means auto
+    int threads = 0;                      ///< engine worker threads; <= 0 means all cores
 };
 
 /// Parses names as the CLI spells them ("solid", "painter", "affine"...); nullopt if unknown.
