@@ -15,10 +15,16 @@
 #include "facet/normals.hpp"
 #include "facet/render.hpp"
 #include "primitives.hpp"
+#include "tile_renderer.hpp"
 
 namespace facet {
 
 using namespace detail;
+
+Renderer::Renderer() : tiles_(std::make_unique<TileRenderer>()) {}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh) {
     if (settings.nearPlane > 0.0) return settings.nearPlane;
@@ -28,14 +34,17 @@ double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh) {
 
 namespace detail {
 
-void countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
+std::size_t countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
     const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
+    std::size_t covered = 0;
     forEachCovered(setup, [&](int x, int y) {
+        ++covered;
         std::uint16_t& n =
             c.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) +
                      static_cast<std::size_t>(x)];
         if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
     });
+    return covered;
 }
 
 std::string_view VaryingLayout::names() const {
@@ -188,13 +197,14 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
     const DrawConstants constants{input.texture ? input.texture : &whiteTexture(), input.lighting,
                                   input.eye, glm::vec3(1.0f)};
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
+    const int threads = resolveThreads(settings.threads);
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
         switch (settings.mode) {
             case DrawMode::Solid: {
-                RasterContext ctx{&frame, &constants, &stats.fragments, subdivision};
-                drawTriangles(input, V::kLayout, settings.cullBackFaces, frame.width, frame.height,
-                              &rasterizeTriangle<V>, &ctx, stats);
+                RasterContext ctx{&frame, &constants, subdivision};
+                tiles_->draw(input, V::kLayout, settings.cullBackFaces, frame.width, frame.height,
+                             &rasterizeTriangle<V>, &ctx, threads, stats);
                 break;
             }
             case DrawMode::Wireframe:
@@ -216,8 +226,8 @@ void Renderer::countCoverage(const DrawInput& input, const RenderSettings& setti
     if (width <= 0 || height <= 0) return;
     RenderStats stats;
     CoverageCounts ctx{counts.data(), width};
-    drawTriangles(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
-                  &ctx, stats);
+    tiles_->draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
+                 &ctx, resolveThreads(settings.threads), stats);
 }
 
 RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,

@@ -17,11 +17,11 @@
 
 namespace facet::detail {
 
-/// What a variant's triangle rasterizer needs besides the triangle.
+/// What a variant's triangle rasterizer needs besides the triangle; shared, read-only, by the
+/// threads that rasterize disjoint tiles.
 struct RasterContext {
     Framebuffer* fb;
     const DrawConstants* constants;
-    std::size_t* fragments;
     int subdivision;  ///< N of Interp::Subdivided
 };
 
@@ -38,7 +38,7 @@ inline bool perspectiveWeights(const Planes& p, float dx, float dy, float& m1, f
 
 /// The triangle pixel loop of variant V.
 template <class V>
-void rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
     const RasterContext& ctx = *static_cast<const RasterContext*>(context);
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
@@ -50,9 +50,10 @@ void rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& 
     float s1a = 0.0f, s2a = 0.0f, s1b = 0.0f, s2b = 0.0f;
     const int n = ctx.subdivision;
     const float invN = 1.0f / static_cast<float>(n);
+    std::size_t fragments = 0;
 
     forEachCovered(setup, [&](int x, int y) {
-        ++*ctx.fragments;
+        ++fragments;
         const auto dx = static_cast<float>(x - p.baseX);
         const auto dy = static_cast<float>(y - p.baseY);
         const float depth = 1.0f / Planes::eval(p.q, dx, dy);
@@ -108,6 +109,7 @@ void rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& 
         }
         storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
     });
+    return fragments;
 }
 
 /// Counts coverage instead of shading (fill-rule tests and overdraw views).
@@ -115,7 +117,7 @@ struct CoverageCounts {
     std::uint16_t* counts;
     int width;
 };
-void countTriangle(void* context, const CoverageSetup& setup, const Planes& planes);
+std::size_t countTriangle(void* context, const CoverageSetup& setup, const Planes& planes);
 
 /// Screen coordinates beyond this are not drawn as lines (their integer maths would overflow).
 inline constexpr double kLineLimit = 1099511627776.0;  // 2^40

@@ -59,8 +59,9 @@ bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int count, i
 
 }  // namespace
 
-void drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
-                   int height, RasterizeFn rasterize, void* context, RenderStats& stats) {
+std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
+                          int height, std::size_t first, std::size_t end, RasterizeFn emit,
+                          void* context, RenderStats& stats) {
     const PixelRect screen{0, 0, width - 1, height - 1};
     const glm::dvec2 guardLo(-kGuardBand, -kGuardBand);
     const glm::dvec2 guardHi(width + kGuardBand, height + kGuardBand);
@@ -68,8 +69,10 @@ void drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, 
     const std::size_t nv = in.clip.size();
     const int count = layout.count();
     Planes planes;
+    std::size_t fragments = 0;
+    end = std::min(end, in.indices.size() / 3);
 
-    for (std::size_t t = 0; t + 2 < in.indices.size(); t += 3) {
+    for (std::size_t t = 3 * first; t < 3 * end; t += 3) {
         const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
         if (idx[0] >= nv || idx[1] >= nv || idx[2] >= nv) continue;
         ++stats.trianglesIn;
@@ -126,7 +129,7 @@ void drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, 
                 }
                 drawn = true;
                 if (!setup.box.empty() && makePlanes(s, tri, count, baseX, baseY, planes))
-                    rasterize(context, setup, planes);
+                    fragments += emit(context, setup, planes);
                 continue;
             }
             if (!makePlanes(s, tri, count, baseX, baseY, planes)) continue;
@@ -146,13 +149,14 @@ void drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, 
                 CoverageSetup setup;
                 if (setupCoverage(xs, ys, screen, setup) == Facing::Degenerate) continue;
                 drawn = true;
-                if (!setup.box.empty()) rasterize(context, setup, planes);
+                if (!setup.box.empty()) fragments += emit(context, setup, planes);
             }
         }
         stats.trianglesClipped += clipped ? 1 : 0;
         stats.trianglesCulled += (culled && !drawn) ? 1 : 0;
         stats.trianglesRasterized += drawn ? 1 : 0;
     }
+    return fragments;
 }
 
 }  // namespace facet::detail

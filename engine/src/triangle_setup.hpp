@@ -29,12 +29,16 @@ struct Planes {
     }
 };
 
-/// The per-triangle rasterizer of a variant: covers `setup` and shades with `planes`.
-using RasterizeFn = void (*)(void* context, const CoverageSetup& setup, const Planes& planes);
+/// The per-triangle rasterizer of a variant: covers `setup` and shades with `planes`; returns
+/// the number of pixels covered (fragments before the depth test).
+using RasterizeFn = std::size_t (*)(void* context, const CoverageSetup& setup,
+                                    const Planes& planes);
 
-/// Runs the front end over the draw's triangles and calls `rasterize` for each part that covers
-/// pixels, with the planes of the (whole, unclipped by the guard band) triangle.
-void drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
-                   int height, RasterizeFn rasterize, void* context, RenderStats& stats);
+/// Runs the front end over triangles [first, end) of the draw and calls `emit` for each part
+/// that covers pixels, with the planes of the (whole, unclipped by the guard band) triangle.
+/// Returns the sum of what `emit` returned.
+std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
+                          int height, std::size_t first, std::size_t end, RasterizeFn emit,
+                          void* context, RenderStats& stats);
 
 }  // namespace facet::detail

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,9 @@
 namespace facet {
 
 class Texture;
+namespace detail {
+class TileRenderer;
+}
 
 /// Geometry already in clip space (see camera.hpp), as one draw consumes it. Only the streams
 /// the settings need are read: colours for every shader but Depth (and Texture without
@@ -66,6 +70,11 @@ double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh);
 /// Renders frames; keeps scratch buffers so a steady frame size allocates nothing per frame.
 class Renderer {
   public:
+    Renderer();
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
     /// Clears `frame` (resized to the camera's image) and renders the scene into it.
     RenderStats render(const Scene& scene, const RenderSettings& settings, Framebuffer& frame);
 
@@ -89,6 +98,7 @@ class Renderer {
     std::vector<glm::dvec4> normalSums_;
     std::vector<glm::vec4> normalClip_;  // the normals display: two clip points per vertex
     std::vector<std::uint32_t> edges_;
+    std::unique_ptr<detail::TileRenderer> tiles_;  // bins kept between frames
 };
 
 }  // namespace facet
