@@ -25,9 +25,10 @@ Bounds computeBounds(const Mesh& mesh) {
     return b;
 }
 
-void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges) {
+void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges,
+                 std::vector<std::uint64_t>& keys) {
     // One 64-bit key per edge sorts lexicographically by (lower, higher) and dedups cheaply.
-    std::vector<std::uint64_t> keys;
+    keys.clear();
     keys.reserve(indices.size());
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
         for (std::size_t e = 0; e < 3; ++e) {
@@ -48,9 +49,15 @@ void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32
     }
 }
 
+void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges) {
+    std::vector<std::uint64_t> keys;
+    uniqueEdges(indices, edges, keys);
+}
+
 std::vector<std::uint32_t> uniqueEdges(const Mesh& mesh) {
     std::vector<std::uint32_t> edges;
-    uniqueEdges(mesh.indices, edges);
+    std::vector<std::uint64_t> keys;
+    uniqueEdges(mesh.indices, edges, keys);
     return edges;
 }
 

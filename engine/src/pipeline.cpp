@@ -14,6 +14,7 @@
 #include "facet/lighting.hpp"
 #include "facet/normals.hpp"
 #include "facet/render.hpp"
+#include "fingerprint.hpp"
 #include "primitives.hpp"
 #include "tile_renderer.hpp"
 
@@ -59,8 +60,27 @@ std::string_view VaryingLayout::names() const {
 
 namespace {
 
+/// Below this many vertices the per-vertex loops stay on one thread: waking the others costs
+/// more than the work.
+constexpr std::ptrdiff_t kParallelVertices = 16384;
+/// Pixels per thread below which whole-frame passes stay on one thread.
+constexpr std::ptrdiff_t kParallelPixels = 1 << 16;
+
+/// Fills colour and depth, split by rows over the threads (a 4K frame is 64 MB of stores).
+void clearFrame(Framebuffer& fb, std::uint32_t rgba, int threads) {
+    const auto n = static_cast<std::ptrdiff_t>(fb.color.size());
+    const std::ptrdiff_t parts =
+        std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, n / kParallelPixels));
+#pragma omp parallel for num_threads(static_cast <int>(parts)) if (parts > 1)
+    for (std::ptrdiff_t p = 0; p < parts; ++p) {
+        const std::ptrdiff_t b = n * p / parts, e = n * (p + 1) / parts;
+        std::fill(fb.color.begin() + b, fb.color.begin() + e, rgba);
+        std::fill(fb.depth.begin() + b, fb.depth.begin() + e, kEmptyDepth);
+    }
+}
+
 /// The depth shader's second pass: visible depth range mapped through viridis.
-void resolveDepthColors(Framebuffer& fb, RenderStats& stats) {
+void resolveDepthColors(Framebuffer& fb, RenderStats& stats, int threads) {
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
     for (const float d : fb.depth)
         if (d != kEmptyDepth) {
@@ -71,7 +91,9 @@ void resolveDepthColors(Framebuffer& fb, RenderStats& stats) {
     stats.depthNear = lo;
     stats.depthFar = hi;
     const double range = hi > lo ? static_cast<double>(hi) - lo : 1.0;
-    for (std::size_t i = 0; i < fb.depth.size(); ++i)
+    const auto n = static_cast<std::ptrdiff_t>(fb.depth.size());
+#pragma omp parallel for num_threads(threads) if (n > kParallelPixels)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
         if (fb.depth[i] != kEmptyDepth)
             fb.color[i] =
                 packColor(glm::vec3(viridis((fb.depth[i] - static_cast<double>(lo)) / range)));
@@ -208,7 +230,7 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
                 break;
             }
             case DrawMode::Wireframe:
-                uniqueEdges(input.indices, edges_);
+                updateEdges(input.indices);
                 drawLines<V>(input, edges_, frame, constants, stats);
                 break;
             case DrawMode::Vertices:
@@ -216,8 +238,16 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
                 break;
         }
     });
-    if (settings.shader == ShaderKind::Depth) resolveDepthColors(frame, stats);
+    if (settings.shader == ShaderKind::Depth) resolveDepthColors(frame, stats, threads);
     return stats;
+}
+
+void Renderer::updateEdges(std::span<const std::uint32_t> indices) {
+    // The edge list is rebuilt (a sort) only when the indices change.
+    const std::uint64_t h = fingerprint(indices);
+    if (h == edgesFingerprint_ && !edges_.empty()) return;
+    uniqueEdges(indices, edges_, edgeKeys_);
+    edgesFingerprint_ = h;
 }
 
 void Renderer::countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
@@ -235,14 +265,17 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     Clock::time_point t = Clock::now();
     const Camera& cam = scene.camera;
     frame.resize(cam.width, cam.height);
-    frame.clear(rgbaFromHex(settings.background));
+    clearFrame(frame, rgbaFromHex(settings.background), resolveThreads(settings.threads));
     const double clearMs = msSince(t);
     // The transform is built in double and applied in float: one matrix, no per-vertex doubles.
     const glm::mat4 clipFromWorldF(clipFromWorld(cam));
     const Mesh& mesh = scene.mesh;
     const auto& positions = mesh.positions;
     clip_.resize(positions.size());
-    for (std::size_t i = 0; i < positions.size(); ++i)
+    const int threads = resolveThreads(settings.threads);
+    const auto vertexCount = static_cast<std::ptrdiff_t>(positions.size());
+#pragma omp parallel for num_threads(threads) if (vertexCount > kParallelVertices)
+    for (std::ptrdiff_t i = 0; i < vertexCount; ++i)
         clip_[i] = clipFromWorldF * glm::vec4(positions[i], 1.0f);
 
     DrawInput input{.clip = clip_,
@@ -254,12 +287,21 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
                     .eye = glm::vec3(cam.eye)};
     // Lighting only changes colour: a depth image or a bare texel needs no normals.
     const bool lit = settings.lighting != Lighting::Off && usesColor(settings);
-    if (lit || settings.showNormals) computeVertexNormals(mesh, normals_, normalSums_);
+    if (lit || settings.showNormals) {
+        // Normals depend on the mesh alone: recomputed only when its positions or indices change.
+        const std::uint64_t h =
+            fingerprint(std::span(mesh.indices), fingerprint(std::span(mesh.positions)));
+        if (h != normalsFingerprint_ || normals_.size() != positions.size()) {
+            computeVertexNormals(mesh, normals_, normalSums_);
+            normalsFingerprint_ = h;
+        }
+    }
     if (lit && settings.lighting == Lighting::Gouraud) {
         // Gouraud: the formula once per vertex in world space; the rasterizer then
         // interpolates the lit colour like any other vertex colour.
         litColors_.resize(positions.size());
-        for (std::size_t i = 0; i < positions.size(); ++i) {
+#pragma omp parallel for num_threads(threads) if (vertexCount > kParallelVertices)
+        for (std::ptrdiff_t i = 0; i < vertexCount; ++i) {
             const glm::vec3 rgb = mesh.hasColors() ? mesh.colors[i] : glm::vec3(1.0f);
             litColors_[i] =
                 shade(rgb, lightIntensity(positions[i], normals_[i], input.eye, input.lighting));
@@ -299,8 +341,9 @@ void Renderer::drawNormals(const Scene& scene, const RenderSettings& settings, f
         normalClip_.push_back(clipFromWorldF * glm::vec4(p, 1.0f));
         normalClip_.push_back(clipFromWorldF * glm::vec4(p + length * normals_[i], 1.0f));
     }
-    edges_.resize(normalClip_.size());
-    for (std::size_t i = 0; i < edges_.size(); ++i) edges_[i] = static_cast<std::uint32_t>(i);
+    normalEdges_.resize(normalClip_.size());
+    for (std::size_t i = 0; i < normalEdges_.size(); ++i)
+        normalEdges_[i] = static_cast<std::uint32_t>(i);
     const DrawInput segments{.clip = normalClip_, .nearPlane = nearPlane};
     const DrawConstants red{&whiteTexture(), {}, glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f)};
     // Simple overwrites; every other shader keeps the depth test, so hidden normals stay hidden.
@@ -308,11 +351,11 @@ void Renderer::drawNormals(const Scene& scene, const RenderSettings& settings, f
     constexpr TextureFilter N = TextureFilter::Nearest;
     RenderStats lines;
     if (settings.shader == ShaderKind::Simple)
-        drawLines<Variant<ShaderKind::Simple, P, false, false, false, N, false>>(segments, edges_,
-                                                                                 frame, red, lines);
+        drawLines<Variant<ShaderKind::Simple, P, false, false, false, N, false>>(
+            segments, normalEdges_, frame, red, lines);
     else
         drawLines<Variant<ShaderKind::Painter, P, false, false, false, N, false>>(
-            segments, edges_, frame, red, lines);
+            segments, normalEdges_, frame, red, lines);
     stats.normalsDrawn = lines.linesDrawn;
     stats.fragments += lines.fragments;
 }

@@ -95,9 +95,16 @@ class Renderer {
     std::vector<glm::vec4> clip_;
     std::vector<glm::vec3> litColors_;
     std::vector<glm::vec3> normals_;
+    std::uint64_t normalsFingerprint_ = 0;  // of the mesh normals_ belong to
     std::vector<glm::dvec4> normalSums_;
     std::vector<glm::vec4> normalClip_;  // the normals display: two clip points per vertex
+    /// The wireframe's unique edges, rebuilt when the indices' fingerprint changes.
+    void updateEdges(std::span<const std::uint32_t> indices);
+
     std::vector<std::uint32_t> edges_;
+    std::vector<std::uint64_t> edgeKeys_;
+    std::uint64_t edgesFingerprint_ = 0;
+    std::vector<std::uint32_t> normalEdges_;
     std::unique_ptr<detail::TileRenderer> tiles_;  // bins kept between frames
 };
 
