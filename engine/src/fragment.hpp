@@ -38,6 +38,14 @@ struct DrawConstants {
     glm::vec3 baseColor{1.0f};  ///< the colour when the layout has none (white; red for normals)
 };
 
+/// What a variant's triangle rasterizer needs besides the triangle; shared, read-only, by the
+/// threads that rasterize disjoint tiles.
+struct RasterContext {
+    Framebuffer* fb;
+    const DrawConstants* constants;
+    int subdivision;  ///< N of Interp::Subdivided
+};
+
 /// Rounds a colour to 8 bits per channel as the conventions say; NaN becomes 0.
 inline std::uint32_t toByte(float c) {
     const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;

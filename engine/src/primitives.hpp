@@ -13,17 +13,10 @@
 #include "clip.hpp"
 #include "fragment.hpp"
 #include "line_raster.hpp"
+#include "span_raster.hpp"
 #include "triangle_setup.hpp"
 
 namespace facet::detail {
-
-/// What a variant's triangle rasterizer needs besides the triangle; shared, read-only, by the
-/// threads that rasterize disjoint tiles.
-struct RasterContext {
-    Framebuffer* fb;
-    const DrawConstants* constants;
-    int subdivision;  ///< N of Interp::Subdivided
-};
 
 /// Perspective-correct weights of vertices 1 and 2 at (dx, dy); false where 1/w is not positive
 /// and finite (possible only when extrapolating outside the triangle).
@@ -36,9 +29,10 @@ inline bool perspectiveWeights(const Planes& p, float dx, float dy, float& m1, f
     return true;
 }
 
-/// The triangle pixel loop of variant V.
+/// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
 template <class V>
-std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+[[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
+                                              const Planes& p) {
     const RasterContext& ctx = *static_cast<const RasterContext*>(context);
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
@@ -110,6 +104,16 @@ std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const P
         storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
     });
     return fragments;
+}
+
+/// The triangle rasterizer of variant V: wide affine or perspective triangles take the 8-lane
+/// span loop, the rest the scalar one. Both are kept out of line so that each is optimised
+/// (and its shading inlined) on its own.
+template <class V>
+std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+    if constexpr (V::kInterp != Interp::Subdivided && !V::kDerivatives)
+        if (setup.box.x1 - setup.box.x0 >= kNarrowBox) return rasterizeSpans<V>(context, setup, p);
+    return rasterizeScalar<V>(context, setup, p);
 }
 
 /// Counts coverage instead of shading (fill-rule tests and overdraw views).

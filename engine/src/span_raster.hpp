@@ -1,0 +1,220 @@
+#pragma once
+// The row-span, 8-lane triangle loop for the affine and perspective variants. Each row's covered
+// pixels are found exactly from the integer edge functions (one division per edge and row, no
+// per-pixel test), then walked eight at a time: depth, the depth test and the interpolation
+// weights are computed for eight pixels at once with GCC vector types (AVX with -mavx2, pairs of
+// SSE registers otherwise), and only the pixels that pass the test are shaded.
+//
+// Every lane does the same float operations in the same order as the scalar loop in
+// primitives.hpp, so both give the same image bit for bit (fast_vs_reference and threads_test).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+#include <xmmintrin.h>
+
+#include "fragment.hpp"
+#include "triangle_setup.hpp"
+
+// The vector types never cross a library boundary, so GCC's note that their calling convention
+// differs with and without AVX does not apply. Not popped: GCC reports it at the end of the
+// including file, for the templates instantiated there.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace facet::detail {
+
+inline constexpr int kLanes = 8;
+/// Boxes narrower than this take the scalar loop: a dense mesh's small triangles cover one to
+/// three pixels per row, too few to fill eight lanes or to pay for the span's divisions.
+inline constexpr int kNarrowBox = 16;
+using Float8 = float __attribute__((vector_size(4 * kLanes)));
+using Int8 = std::int32_t __attribute__((vector_size(4 * kLanes)));
+
+/// The covered pixels [lo, hi] of a row whose edge values at pixel x0 are e[i] (steps stepX[i]
+/// per pixel), within [x0, x1]; false when none. Exact: E(x) ≥ 0 solved in integers per edge.
+inline bool coveredSpan(const std::int64_t (&e)[3], const std::int64_t (&stepX)[3], int x0, int x1,
+                        int& lo, int& hi) {
+    const std::int64_t width = x1 - x0;
+    std::int64_t first = 0, last = width;
+    for (int i = 0; i < 3; ++i) {
+        const std::int64_t v = e[i], s = stepX[i];
+        if (s == 0) {
+            if (v < 0) return false;
+        } else if (s > 0) {  // rising: inside from k ≥ ceil(−v / s)
+            if (v < 0) first = std::max(first, (-v + s - 1) / s);
+        } else {  // falling: inside up to k ≤ floor(v / −s)
+            if (v < 0) return false;
+            last = std::min(last, v / -s);
+        }
+    }
+    if (first > last) return false;
+    lo = x0 + static_cast<int>(first);
+    hi = x0 + static_cast<int>(last);
+    return true;
+}
+
+/// The plane p at eight pixels: the scalar Planes::eval, lane by lane.
+[[gnu::always_inline]] inline Float8 eval8(const float (&p)[3], Float8 dx, float dy) {
+    return p[0] + p[1] * dx + p[2] * dy;
+}
+
+/// Eight colours or vectors, one lane per pixel.
+struct Vec3x8 {
+    Float8 x, y, z;
+};
+
+[[gnu::always_inline]] inline Float8 dot8(const Vec3x8& a, const Vec3x8& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;  // glm::dot's order: (x + y) + z
+}
+
+/// Square roots of eight lanes: sqrtps (correctly rounded, like std::sqrt) on each half, as
+/// std::sqrt itself is not vectorized while it may set errno.
+[[gnu::always_inline]] inline Float8 sqrt8(Float8 v) {
+    __m128 half[2];
+    std::memcpy(half, &v, sizeof v);
+    half[0] = _mm_sqrt_ps(half[0]);
+    half[1] = _mm_sqrt_ps(half[1]);
+    Float8 out;
+    std::memcpy(&out, half, sizeof out);
+    return out;
+}
+
+/// normalizeOrZero() lane by lane.
+[[gnu::always_inline]] inline Vec3x8 normalize8(const Vec3x8& v) {
+    const Float8 length2 = dot8(v, v);
+    const Float8 inv = 1.0f / sqrt8(length2);
+    const Float8 zero = {};
+    const Float8 scale = length2 > 0.0f ? inv : zero;
+    return {v.x * scale, v.y * scale, v.z * scale};
+}
+
+/// clamp(c, 0, 1) then toByte(), lane by lane (NaN to 0 as there).
+[[gnu::always_inline]] inline Int8 toByte8(Float8 c) {
+    const Float8 zero = {}, one = zero + 1.0f;
+    const Float8 v = c > 0.0f ? (c < 1.0f ? c : one) : zero;
+    return __builtin_convertvector(v * 255.0f + 0.5f, Int8);
+}
+
+/// lightIntensity() and shade() for eight pixels: the same operations in the same order; only
+/// pow runs lane by lane, and only for the lanes in `live` (it is most of the cost).
+[[gnu::always_inline]] inline Vec3x8 light8(const Vec3x8& rgb, const Vec3x8& p, const Vec3x8& n,
+                                            const DrawConstants& k, unsigned live) {
+    const FastLighting& f = k.lighting;
+    const Vec3x8 toLight{f.light.x - f.light.w * p.x, f.light.y - f.light.w * p.y,
+                         f.light.z - f.light.w * p.z};
+    const Vec3x8 l = normalize8(toLight);
+    const Vec3x8 v = normalize8({k.eye.x - p.x, k.eye.y - p.y, k.eye.z - p.z});
+    const Vec3x8 h = normalize8({l.x + v.x, l.y + v.y, l.z + v.z});
+    const Float8 nl = dot8(n, l);
+    const Float8 zero = {}, one = zero + 1.0f;
+    Float8 nh = dot8(n, h);
+    nh = nh < 0.0f ? zero : (nh > 1.0f ? one : nh);  // std::clamp(nh, 0, 1)
+    Float8 specular = {};
+    for (int i = 0; i < kLanes; ++i)
+        if (live >> i & 1u) specular[i] = std::pow(nh[i], f.shininess);
+    const Float8 lit = f.diffuse * nl + f.specular * specular;
+    const Float8 intensity = f.ambientTerm + (nl > 0.0f ? lit : zero);
+    auto clamp01 = [&](Float8 c) { return c < 0.0f ? zero : (c > 1.0f ? one : c); };
+    return {clamp01(rgb.x * intensity), clamp01(rgb.y * intensity), clamp01(rgb.z * intensity)};
+}
+
+/// Whether V's colour can be computed for eight lanes at once (no texture lookups).
+template <class V>
+inline constexpr bool kVectorColor =
+    V::kShader == ShaderKind::Simple || V::kShader == ShaderKind::Painter;
+
+/// The packed colours of eight pixels of an untextured variant from their varyings.
+template <class V>
+[[gnu::always_inline]] inline Int8 colors8(const Float8* a, const DrawConstants& k, unsigned live) {
+    constexpr VaryingLayout L = V::kLayout;
+    const Float8 zero = {};
+    Vec3x8 rgb{zero + k.baseColor.r, zero + k.baseColor.g, zero + k.baseColor.b};
+    if constexpr (L.color) rgb = {a[L.colorAt()], a[L.colorAt() + 1], a[L.colorAt() + 2]};
+    if constexpr (L.phong) {
+        const int ni = L.normalAt(), pi = L.positionAt();
+        const Vec3x8 n = normalize8({a[ni], a[ni + 1], a[ni + 2]});
+        rgb = light8(rgb, {a[pi], a[pi + 1], a[pi + 2]}, n, k, live);
+    }
+    return toByte8(rgb.x) | (toByte8(rgb.y) << 8) | (toByte8(rgb.z) << 16) |
+           static_cast<std::int32_t>(0xFF000000u);
+}
+
+/// The triangle loop of an affine or perspective variant V without derivatives.
+template <class V>
+[[gnu::noinline]] std::size_t rasterizeSpans(void* context, const CoverageSetup& setup,
+                                             const Planes& p) {
+    static_assert(V::kInterp != Interp::Subdivided && !V::kDerivatives);
+    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
+    Framebuffer& fb = *ctx.fb;
+    const DrawConstants& k = *ctx.constants;
+    constexpr int kCount = V::kCount;
+    Float8 laneOffset;
+    for (int i = 0; i < kLanes; ++i) laneOffset[i] = static_cast<float>(i);
+    std::size_t fragments = 0;
+
+    std::int64_t row[3] = {setup.e0[0], setup.e0[1], setup.e0[2]};
+    for (int y = setup.box.y0; y <= setup.box.y1; ++y) {
+        int lo = 0, hi = -1;
+        const bool any = coveredSpan(row, setup.stepX, setup.box.x0, setup.box.x1, lo, hi);
+        for (int i = 0; i < 3; ++i) row[i] += setup.stepY[i];
+        if (!any) continue;
+        const auto dy = static_cast<float>(y - p.baseY);
+        const std::size_t rowStart = fb.index(0, y);
+
+        for (int x = lo; x <= hi; x += kLanes) {
+            const int n = std::min(kLanes, hi - x + 1);
+            unsigned pass = (1u << n) - 1u;
+            fragments += static_cast<std::size_t>(__builtin_popcount(pass));
+            const Float8 dx = static_cast<float>(x - p.baseX) + laneOffset;  // exact below 2^24
+            const Float8 depth = 1.0f / eval8(p.q, dx, dy);
+            float* zrow = fb.depth.data() + rowStart + static_cast<std::size_t>(x);
+            if constexpr (depthTested(V::kShader)) {
+                Float8 z;
+                for (int i = 0; i < kLanes; ++i) z[i] = i < n ? zrow[i] : 0.0f;
+                const Int8 less = depth < z;
+                unsigned bits = 0;
+                for (int i = 0; i < kLanes; ++i) bits |= less[i] ? 1u << i : 0u;
+                pass &= bits;
+                if (pass == 0) continue;
+            }
+            Float8 m1, m2;
+            if constexpr (V::kInterp == Interp::Affine) {
+                m1 = eval8(p.l1, dx, dy);
+                m2 = eval8(p.l2, dx, dy);
+            } else {
+                m1 = eval8(p.u1, dx, dy) * depth;
+                m2 = eval8(p.u2, dx, dy) * depth;
+            }
+            Float8 a[kCount > 0 ? kCount : 1];
+            for (int j = 0; j < kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
+            std::uint32_t* crow = fb.color.data() + rowStart + static_cast<std::size_t>(x);
+            // Eight lanes at once pay off only when most are live: a dense mesh's small
+            // triangles leave one to three, which the scalar loop below shades cheaper.
+            if constexpr (kVectorColor<V>) {
+                if (__builtin_popcount(pass) >= kLanes / 2) {
+                    const Int8 c = colors8<V>(a, k, pass);
+                    for (int i = 0; i < n; ++i) {
+                        if (!(pass >> i & 1u)) continue;
+                        if constexpr (depthTested(V::kShader)) zrow[i] = depth[i];
+                        crow[i] = static_cast<std::uint32_t>(c[i]);
+                    }
+                    continue;
+                }
+            }
+            for (int i = 0; i < n; ++i) {
+                if (!(pass >> i & 1u)) continue;
+                float v[kCount > 0 ? kCount : 1];
+                for (int j = 0; j < kCount; ++j) v[j] = a[j][i];
+                if constexpr (depthTested(V::kShader)) zrow[i] = depth[i];
+                if constexpr (V::kShader != ShaderKind::Depth)
+                    crow[i] = packColor(fragmentColor<V>(v, k, 0.0f));
+            }
+        }
+    }
+    return fragments;
+}
+
+}  // namespace facet::detail
