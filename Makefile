@@ -7,7 +7,7 @@ BUILD_ASAN ?= build-asan
 CMAKE_ARGS ?=
 OUT        ?= out
 
-.PHONY: all setup build run test test-sanitize doc format clean
+.PHONY: all setup build run test test-sanitize bench-kernels doc format clean
 
 all: build
 
@@ -36,6 +36,14 @@ test-sanitize: setup
 	cmake --build $(BUILD_ASAN)
 	cd $(BUILD_ASAN) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j 2
+
+# Kernel micro-benchmarks (tests/kernels_bench.cpp) from the Release build. Each runs 5 times and
+# only the aggregates (mean, median, stddev, cv) are shown, since one run on a busy machine can be
+# far off; compare medians. BENCH_ARGS overrides, e.g. BENCH_ARGS=--benchmark_filter=shade/.
+BENCH_ARGS ?= --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+bench-kernels: setup $(BUILD)/build.ninja
+	cmake --build $(BUILD) --target kernels_bench
+	$(BUILD)/tests/kernels_bench $(BENCH_ARGS)
 
 doc: setup
 	@command -v doxygen >/dev/null || bash scripts/setup-debian.sh doxygen
