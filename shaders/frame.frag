@@ -1,5 +1,6 @@
 #version 330 core
-// Shows the CPU frame texel for texel: the texture is the frame's size and uses GL_NEAREST.
+// Shows the frame texel for texel (the engine's, the OpenGL twin's read back, or both composed):
+// the texture is the frame's size and uses GL_NEAREST.
 in vec2 uv;
 uniform sampler2D frame;
 out vec4 color;

@@ -1,7 +1,8 @@
 #version 330 core
-// One fullscreen triangle from gl_VertexID (no vertex buffer): the viewer draws the CPU frame
-// as a single texture covering the window. Row 0 of the frame is the top of the image, while
-// OpenGL's texture origin is the bottom row, hence the flip of v.
+// One fullscreen triangle from gl_VertexID (no vertex buffer): the viewer draws the frame (the
+// engine's, the twin's, or both composed) as a single texture covering its view. Row 0 of the
+// frame is the top of the image, while OpenGL's texture origin is the bottom row, hence the flip
+// of v.
 out vec2 uv;
 void main() {
     vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));  // (0,0) (2,0) (0,2)

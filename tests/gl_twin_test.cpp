@@ -290,6 +290,8 @@ TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
     glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
     glDepthFunc(GL_LEQUAL);
     glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 7);  // as a caller's own readback might leave them
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 3);
     const facet::Framebuffer dirty = renderTwin(*t.renderer, *scene);
     EXPECT_TRUE(dirty.color == clean.color && dirty.depth == clean.depth);
 
@@ -310,6 +312,13 @@ TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
     EXPECT_EQ(framebuffer, 0);
     EXPECT_EQ(clear[2], 0.75f);
     EXPECT_EQ(mask[1], GL_FALSE);
+    GLint packRowLength = 0, unpackSkipRows = 0;
+    glGetIntegerv(GL_PACK_ROW_LENGTH, &packRowLength);
+    glGetIntegerv(GL_UNPACK_SKIP_ROWS, &unpackSkipRows);
+    EXPECT_EQ(packRowLength, 7);
+    EXPECT_EQ(unpackSkipRows, 3);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

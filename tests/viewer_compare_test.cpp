@@ -1,6 +1,7 @@
 // The Compare view and the engine's image difference behind it (error per pixel, the numbers,
 // the heat map, the split composition, two renders of one view with their own interpolations),
-// and the render worker that runs the engine on its own thread.
+// the renderer choice that puts the OpenGL twin beside the engine across the same divider, and
+// the render worker that runs the engine on its own thread.
 
 #include <cmath>
 #include <string>
@@ -13,6 +14,7 @@
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "render_worker.hpp"
+#include "renderer_choice.hpp"
 #include "viewer_model.hpp"
 
 namespace {
@@ -94,6 +96,88 @@ TEST(CompareView, SplitTakesEachSideFromItsFrameWithAWhiteDivider) {
     EXPECT_EQ(dividerColumn(-3.0, 1280), 0);
     EXPECT_EQ(dividerColumn(7.0, 1280), 1280);
     EXPECT_EQ(dividerColumn(NAN, 1280), 640);
+}
+
+TEST(CompareView, ComposingTwoRenderersIsComposingTwoInterpolations) {
+    // Side by side, the engine's frame and the twin's go through the very code the Compare
+    // view uses: the split keeps each side's pixels, the heat map marks where they differ.
+    const Framebuffer cpu = filled(8, 2, packRgba(10, 20, 30));
+    Framebuffer gl = cpu;
+    gl.color[gl.index(6, 1)] = packRgba(10, 21, 30);  // one step apart, on the right side
+    Framebuffer shown;
+    ImageDiff d = composeSides(cpu, gl, CompareDisplay::Split, 0.25, 0, shown);
+    EXPECT_EQ(d.pixelsDiffering, 1u);
+    EXPECT_EQ(d.maxError, 1);
+    EXPECT_EQ(shown.color[shown.index(1, 0)], cpu.color[0]);
+    EXPECT_EQ(shown.color[shown.index(2, 0)], packRgba(255, 255, 255));
+    EXPECT_EQ(shown.color[shown.index(6, 1)], gl.color[gl.index(6, 1)]);
+    d = composeSides(cpu, gl, CompareDisplay::Difference, 0.25, 0, shown);
+    EXPECT_EQ(d.pixelsDiffering, 1u);
+    for (std::size_t i = 0; i < shown.color.size(); ++i)
+        EXPECT_EQ(shown.color[i] == packRgba(0, 0, 0), i != gl.index(6, 1)) << i;
+
+    CompareView c;
+    c.leftFrame = cpu;
+    c.rightFrame = gl;
+    c.divider = 0.25;
+    const Framebuffer& composed = c.compose();
+    composeSides(cpu, gl, CompareDisplay::Split, 0.25, 0, shown);
+    EXPECT_TRUE(composed.color == shown.color);
+    EXPECT_EQ(c.diff.pixelsDiffering, 1u);
+}
+
+TEST(RendererChoice, NamesLabelsAndTheGKeyCycle) {
+    EXPECT_EQ(rendererNames(), (std::vector<std::string_view>{"cpu", "gl", "split"}));
+    for (const std::string_view name : rendererNames())
+        EXPECT_EQ(toString(parseRenderer(name).value()), name);
+    EXPECT_FALSE(parseRenderer("GL").has_value());
+    EXPECT_FALSE(parseRenderer("").has_value());
+    EXPECT_EQ(rendererLabel(RendererChoice::Cpu), "CPU engine");
+    EXPECT_EQ(rendererLabel(RendererChoice::OpenGl), "OpenGL twin");
+    EXPECT_EQ(rendererLabel(RendererChoice::Split), "CPU | OpenGL side by side");
+    RendererChoice c = RendererChoice::Cpu;
+    for (const RendererChoice expected :
+         {RendererChoice::OpenGl, RendererChoice::Split, RendererChoice::Cpu}) {
+        c = nextRenderer(c);
+        EXPECT_EQ(c, expected);
+    }
+}
+
+TEST(RendererChoice, WhatAFrameRunsForEachChoice) {
+    const FramePlan cpu = planFrame(RendererChoice::Cpu, false);
+    EXPECT_TRUE(cpu.engine && !cpu.engineCompare && !cpu.twin && !cpu.sideBySide);
+    EXPECT_FALSE(cpu.twoSides());
+    const FramePlan compare = planFrame(RendererChoice::Cpu, true);
+    EXPECT_TRUE(compare.engine && compare.engineCompare && !compare.twin && compare.twoSides());
+    for (const bool compareOn : {false, true}) {
+        // The Compare checkbox only counts with the CPU engine.
+        const FramePlan gl = planFrame(RendererChoice::OpenGl, compareOn);
+        EXPECT_TRUE(!gl.engine && !gl.engineCompare && gl.twin && !gl.sideBySide);
+        EXPECT_FALSE(gl.twoSides());
+        const FramePlan split = planFrame(RendererChoice::Split, compareOn);
+        EXPECT_TRUE(split.engine && !split.engineCompare && split.twin && split.sideBySide);
+        EXPECT_TRUE(split.twoSides());
+    }
+}
+
+TEST(RendererChoice, TheTwinAndTheInterpolationCompareExcludeEachOther) {
+    ViewerModel m;
+    CompareView c;
+    EXPECT_EQ(m.rendererChoice, RendererChoice::Cpu);
+    setCompare(true, m.rendererChoice, c);
+    EXPECT_TRUE(c.enabled);
+    selectRenderer(m.rendererChoice, RendererChoice::Split, c);  // the divider is the twin's now
+    EXPECT_EQ(m.rendererChoice, RendererChoice::Split);
+    EXPECT_FALSE(c.enabled);
+    setCompare(true, m.rendererChoice, c);  // and back: Compare takes the CPU engine
+    EXPECT_EQ(m.rendererChoice, RendererChoice::Cpu);
+    EXPECT_TRUE(c.enabled);
+    selectRenderer(m.rendererChoice, RendererChoice::Cpu, c);  // the engine keeps Compare
+    EXPECT_TRUE(c.enabled);
+    selectRenderer(m.rendererChoice, RendererChoice::OpenGl, c);
+    EXPECT_FALSE(c.enabled);
+    setCompare(false, m.rendererChoice, c);  // off leaves the choice alone
+    EXPECT_EQ(m.rendererChoice, RendererChoice::OpenGl);
 }
 
 TEST(CompareView, RendersTheSameViewWithTwoInterpolations) {

@@ -13,6 +13,9 @@
 #   divider left drag from the middle of the window to x = 900 (the Compare divider)
 #   resize  resize the window to 800x600
 #   key     press P (screenshot into OUTDIR)
+#   renderers  press G four times, a second apart: CPU engine → OpenGL twin → side by side →
+#           CPU engine → OpenGL twin
+#   combo   open the Render panel's renderer combo and click its second entry (OpenGL twin)
 set -u
 scenario=$1
 out=$2
@@ -61,6 +64,18 @@ case "$scenario" in
   divider) drag 1 640 450 260 0 5 ;;
   resize) xdotool windowsize "$wid" 800 600; sleep 1 ;;
   key) xdotool mousemove --window "$wid" 800 450; sleep 0.2; xdotool key p; sleep 0.5 ;;
+  renderers)
+    xdotool mousemove --window "$wid" 800 450
+    for _ in 1 2 3 4; do sleep 1; xdotool key g; done
+    sleep 1
+    ;;
+  combo)
+    # The combo is the Render panel's first row, open at start (panel at 10,10; 360 wide).
+    xdotool mousemove --window "$wid" 110 92 click 1
+    sleep 0.5
+    xdotool mousemove --window "$wid" 110 133 click 1
+    sleep 1
+    ;;
   *) echo "viewer_drive: unknown scenario $scenario" >&2 ;;
 esac
 

@@ -3,16 +3,7 @@
 // Each test starts its own Xvfb; ctest runs them one at a time (RESOURCE_LOCK), since two
 // `xvfb-run -a` starting together can pick the same display number.
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
+#include <algorithm>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -20,112 +11,12 @@
 #include "facet/framebuffer.hpp"
 #include "facet/image_diff.hpp"
 #include "facet/scene_io.hpp"
-#include "facet/texture.hpp"
-#include "state_file.hpp"
+#include "viewer_gui_support.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace facet;
-
-const std::string kViewer = FACET_VIEWER;
-const std::string kDriver = FACET_VIEWER_DRIVER;
-const std::string kScene = std::string(FACET_ASSETS_DIR) + "/default.scene";
-const std::string kXvfb = "xvfb-run -a -s '-screen 0 1920x1080x24' ";
-
-struct Outcome {
-    int exitCode = -1;
-    std::string out;  // stdout and stderr together
-};
-
-Outcome run(const std::string& cmd) {
-    Outcome r;
-    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), static_cast<int>(buf.size()), p)) r.out += buf.data();
-    const int status = pclose(p);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-bool have(const char* program) {
-    return std::system((std::string("command -v ") + program + " >/dev/null 2>&1").c_str()) == 0;
-}
-
-/// A PNG as a frame (through the engine's image loader); empty when unreadable.
-Framebuffer readPng(const fs::path& path) {
-    Framebuffer f;
-    Result<Texture> t = loadTexture(path.string());
-    if (!t) return f;
-    const MipLevel& l = t->level(0);
-    f.resize(l.width, l.height);
-    f.color = l.texels;
-    return f;
-}
-
-std::map<std::string, std::string> readState(const fs::path& path) {
-    std::ifstream f(path);
-    std::stringstream s;
-    s << f.rdbuf();
-    return view::parseState(s.str());
-}
-
-double number(const std::map<std::string, std::string>& state, const std::string& key) {
-    const auto it = state.find(key);
-    return it == state.end() ? NAN : std::stod(it->second);
-}
-
-/// Share of the pixels in [x0, x1) × [y0, y1) that differ between a and b.
-double differingShare(const Framebuffer& a, const Framebuffer& b, int x0, int y0, int x1, int y1) {
-    std::size_t n = 0, differ = 0;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x, ++n)
-            differ += pixelError(a.color[a.index(x, y)], b.color[b.index(x, y)]) > 0;
-    return n ? static_cast<double>(differ) / static_cast<double>(n) : 0.0;
-}
-
-class ViewerGui : public ::testing::Test {
-  protected:
-    fs::path dir;
-
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("facet_viewer_gui_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override {
-        if (!HasFailure()) fs::remove_all(dir);  // kept for a look when something failed
-    }
-    std::string path(const std::string& name) const { return (dir / name).string(); }
-
-    /// `facet render` of the default scene with extra options, as the reference picture.
-    Framebuffer cliRender(const std::string& name, const std::string& options = "") {
-        const Outcome r =
-            run(std::string(FACET_CLI) + " render " + kScene + " -o " + path(name) + " " + options);
-        EXPECT_EQ(r.exitCode, 0) << r.out;
-        return readPng(path(name));
-    }
-
-    /// Runs the viewer under its own Xvfb, in `dir`.
-    Outcome viewer(const std::string& args) {
-        return run("cd " + dir.string() + " && timeout 60 " + kXvfb + kViewer + " " + args);
-    }
-
-    /// Drives the viewer with xdotool through tests/viewer_drive.sh.
-    Outcome drive(const std::string& scenario, const std::string& args = "--size 1280x720") {
-        return run("timeout 90 " + kXvfb + "sh " + kDriver + " " + scenario + " " + dir.string() +
-                   " " + kViewer + " --no-vsync " + args);
-    }
-};
-
-#define REQUIRE_XVFB() \
-    if (!have("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb)"
-#define REQUIRE_XDOTOOL() \
-    REQUIRE_XVFB();       \
-    if (!have("xdotool")) GTEST_SKIP() << "xdotool is not installed (Debian package xdotool)"
+using namespace viewer_gui;
 
 TEST_F(ViewerGui, WithoutADisplayItSaysWhatToDoAndExits2) {
     const Outcome r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + kViewer + " " + kScene);

@@ -19,6 +19,7 @@
 #include "frame_stats.hpp"
 #include "layout.hpp"
 #include "options.hpp"
+#include "renderer_choice.hpp"
 #include "resources.hpp"
 #include "settings_map.hpp"
 #include "state_file.hpp"
@@ -296,6 +297,33 @@ TEST(ViewerOptions, ParsesTheTestAndBenchmarkOptions) {
     EXPECT_TRUE(s.cullBackFaces && s.combine && s.showNormals);
 }
 
+TEST(ViewerOptions, TheRendererChoiceAndHowItGoesWithCompare) {
+    EXPECT_EQ(parse({}).options.renderer, "cpu");
+    for (const char* name : {"cpu", "gl", "split"}) {
+        const ParsedOptions p = parse({"--renderer", name});
+        ASSERT_FALSE(p.exit) << p.text;
+        EXPECT_EQ(p.options.renderer, name);
+        EXPECT_TRUE(parseRenderer(p.options.renderer).has_value());
+    }
+    // --difference alone is the interpolation Compare's heat map; with the twin beside the
+    // engine it is theirs, and Compare stays off.
+    const ParsedOptions cpuHeat = parse({"--difference"});
+    EXPECT_TRUE(cpuHeat.options.compare && cpuHeat.options.difference);
+    const ParsedOptions splitHeat = parse({"--renderer", "split", "--difference"});
+    ASSERT_FALSE(splitHeat.exit) << splitHeat.text;
+    EXPECT_FALSE(splitHeat.options.compare);
+    EXPECT_TRUE(splitHeat.options.difference);
+    for (std::vector<const char*> args : {std::vector<const char*>{"--renderer", "vulkan"},
+                                          {"--renderer", "gl", "--compare"},
+                                          {"--renderer", "split", "--compare"}}) {
+        const ParsedOptions p = parse(args);
+        EXPECT_TRUE(p.exit) << args[1];
+        EXPECT_EQ(p.exitCode, 2) << args[1];
+        EXPECT_EQ(p.text.find('\n'), std::string::npos) << p.text;
+    }
+    EXPECT_NE(parse({"--help"}).text.find("--renderer"), std::string::npos);
+}
+
 TEST(ViewerOptions, BadInputIsExitCode2WithOneLine) {
     for (std::vector<const char*> args : {std::vector<const char*>{"--size", "0x10"},
                                           {"--size", "big"},
@@ -385,7 +413,28 @@ TEST(ViewerState, TextHoldsTheViewLightAndMaterial) {
     EXPECT_EQ(state.at("material").substr(0, 12), "0.5 0.699999");
     EXPECT_NE(state.at("material").find(" 0.25 "), std::string::npos) << state.at("material");
     EXPECT_EQ(state.at("scene"), m.scene.path);
+    EXPECT_EQ(state.at("renderer"), "cpu");
+    m.rendererChoice = RendererChoice::Split;
+    EXPECT_EQ(parseState(stateText(m, 1)).at("renderer"), "split");
     EXPECT_TRUE(writeTextFile("/no/such/folder/state.txt", "x"));
+}
+
+TEST(ViewerState, TheRendererLogStaysOneLinePerKey) {
+    RendererLog log;
+    EXPECT_EQ(parseState(rendererLogText(log)).at("twin_error"), "");
+    log.engineFrames = 7;
+    log.twinFrames = 3;
+    log.switches = 2;
+    log.device = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    log.error = "/s/twin.frag: 0:3(1): error: syntax error\nvariant:\n#define PHONG 1\n";
+    const auto state = parseState(rendererLogText(log));
+    EXPECT_EQ(state.at("engine_frames"), "7");
+    EXPECT_EQ(state.at("twin_frames"), "3");
+    EXPECT_EQ(state.at("renderer_switches"), "2");
+    EXPECT_EQ(state.at("twin_device"), log.device);
+    EXPECT_EQ(state.at("twin_error"),
+              "/s/twin.frag: 0:3(1): error: syntax error | variant: | #define PHONG 1 | ");
+    EXPECT_EQ(state.size(), 5u);
 }
 
 TEST(ViewerStats, MediansAndTheHistoryWindow) {
@@ -412,14 +461,27 @@ TEST(ViewerStats, MediansAndTheHistoryWindow) {
     EXPECT_EQ(h.dropped + h.frames.size(), 19u);
 }
 
-TEST(ViewerResources, FindsTheDefaultSceneAndTheShaders) {
+TEST(ViewerStats, EachRenderersMedianCountsOnlyTheFramesItRan) {
+    // Three CPU frames, then the twin alone for four, then both for two.
+    FrameHistory h;
+    for (int i = 0; i < 3; ++i) h.push(FrameTimes{.render = 10.0, .total = 20.0});
+    for (int i = 0; i < 4; ++i)
+        h.push(FrameTimes{.twin = 6.0, .twinUpload = 1.0, .twinDraw = 4.0, .twinReadback = 1.0});
+    for (int i = 0; i < 2; ++i) h.push(FrameTimes{.render = 12.0, .twin = 8.0, .compare = 2.0});
+    const FrameTimes m = h.median();
+    EXPECT_DOUBLE_EQ(m.render, 10.0);  // the 5 frames it ran: 10 10 10 12 12
+    EXPECT_DOUBLE_EQ(m.twin, 6.0);     // 6 6 6 6 8 8
+    EXPECT_DOUBLE_EQ(m.twinDraw, 4.0);
+    EXPECT_DOUBLE_EQ(m.compare, 0.0);  // every frame counts for the rest
+    EXPECT_DOUBLE_EQ(h.recentMedian(2).render, 12.0);
+    EXPECT_DOUBLE_EQ(FrameHistory{}.median().twin, 0.0);
+    EXPECT_NE(fpsReport(h, 0).find("twin 6.00"), std::string::npos) << fpsReport(h, 0);
+}
+
+TEST(ViewerResources, FindsTheDefaultScene) {
     const std::string scene = defaultScenePath();
     ASSERT_FALSE(scene.empty());
     EXPECT_TRUE(fs::exists(scene));
-    const std::string shaders = shaderDir();
-    ASSERT_FALSE(shaders.empty());
-    EXPECT_TRUE(fs::exists(fs::path(shaders) / "frame.vert"));
-    EXPECT_TRUE(fs::exists(fs::path(shaders) / "frame.frag"));
     EXPECT_EQ(findResource("no/such/file.txt", "/nowhere"), "");
 }
 

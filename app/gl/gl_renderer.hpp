@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
@@ -28,7 +29,7 @@ struct GlStats {
     float depthFar = 0.0f;         ///< Depth shader: largest depth in the frame
     std::size_t uploadBytes = 0;   ///< vertex, index and texture bytes sent this frame
     double uploadMs = 0.0;         ///< CPU preparation and uploads (normals, edges, buffers)
-    double drawMs = 0.0;           ///< draw calls until glFinish returned
+    double drawMs = 0.0;           ///< draw calls until glFinish returned (CPU clock)
     double readbackMs = 0.0;       ///< colour and depth readback, depth colours, legend
 };
 
@@ -53,6 +54,13 @@ class GlRenderer {
     /// colour with row 0 at the top, depth as camera-space Z with +inf where nothing drew.
     /// Errors: a shader variant that does not build, a size beyond the driver's limit.
     Result<GlStats> render(const Scene& scene, const RenderSettings& settings, Framebuffer& frame);
+
+    /// Where the twin's picture departs from the engine's for these settings beyond colour
+    /// rounding, one line each, for the viewer to say so; empty when it does not.
+    static std::string differences(const RenderSettings& settings);
+
+    /// GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+    const std::string& device() const;
 
   private:
     explicit GlRenderer(std::unique_ptr<gl::RendererState> state);

@@ -29,6 +29,7 @@ StateGuard::StateGuard(bool clipControl) : clipControl_(clipControl) {
     glGetFloatv(GL_DEPTH_CLEAR_VALUE, &clearDepth_);
     glGetFloatv(GL_LINE_WIDTH, &lineWidth_);
     glGetFloatv(GL_POINT_SIZE, &pointSize_);
+    for (int i = 0; i < kPixelStoreCount; ++i) glGetIntegerv(kPixelStore[i], &pixelStore_[i]);
 
     // The twin's baseline: every pixel written as computed, nothing mixed or masked.
     for (const GLenum cap : kCaps) glDisable(cap);
@@ -39,6 +40,8 @@ StateGuard::StateGuard(bool clipControl) : clipControl_(clipControl) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glLineWidth(1.0f);
     glPointSize(1.0f);
+    for (const GLenum p : kPixelStore)
+        glPixelStorei(p, p == GL_UNPACK_ALIGNMENT || p == GL_PACK_ALIGNMENT ? 4 : 0);
 }
 
 StateGuard::~StateGuard() {
@@ -71,6 +74,7 @@ StateGuard::~StateGuard() {
     glClearDepth(static_cast<GLdouble>(clearDepth_));
     glLineWidth(lineWidth_);
     glPointSize(pointSize_);
+    for (int i = 0; i < kPixelStoreCount; ++i) glPixelStorei(kPixelStore[i], pixelStore_[i]);
 }
 
 }  // namespace facet::gl

@@ -8,7 +8,8 @@
 namespace facet::gl {
 
 /// Saves the state the twin touches on construction and restores it on destruction; then sets
-/// the twin's baseline (no blending, scissor, stencil, dithering or sRGB; fill; full masks).
+/// the twin's baseline (no blending, scissor, stencil, dithering or sRGB; fill; full masks;
+/// GL's default pixel packing and unpacking).
 class StateGuard {
   public:
     /// Saves; `clipControl`: whether glClipControl exists (its state is saved only then).
@@ -37,6 +38,12 @@ class StateGuard {
     GLint polygonMode_[2] = {GL_FILL, GL_FILL};
     GLboolean depthMask_ = GL_TRUE, colorMask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
     GLfloat clearColor_[4] = {}, clearDepth_ = 1.0f, lineWidth_ = 1.0f, pointSize_ = 1.0f;
+    // How pixels travel to textures and back from the FBO: GL's defaults while the twin runs.
+    static constexpr GLenum kPixelStore[] = {
+        GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS,
+        GL_PACK_ALIGNMENT,   GL_PACK_ROW_LENGTH,   GL_PACK_SKIP_ROWS,   GL_PACK_SKIP_PIXELS};
+    static constexpr int kPixelStoreCount = sizeof(kPixelStore) / sizeof(kPixelStore[0]);
+    GLint pixelStore_[kPixelStoreCount] = {};
 };
 
 }  // namespace facet::gl

@@ -42,8 +42,8 @@ void RenderTarget::bind() const {
     glViewport(0, 0, width_, height_);
 }
 
-// Rows of 4-byte pixels are never padded, so the pack alignment (the viewer sets 1 for its
-// screenshots) does not matter and is left alone.
+// Tightly packed rows: the StateGuard sets GL's default packing for the twin's frame, whatever
+// the caller left (the viewer packs with alignment 1 for its screenshots).
 void RenderTarget::readColor(Framebuffer& frame) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
     glReadBuffer(GL_COLOR_ATTACHMENT0);

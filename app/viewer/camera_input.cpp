@@ -1,7 +1,8 @@
 // Mouse and keyboard for the view: orbit with the left button, pan with the right or middle,
-// zoom with the wheel, the Compare divider by dragging it. Input is read from ImGui after
-// NewFrame(), when WantCaptureMouse describes this very frame: a press over a panel belongs to
-// the panel and never starts a camera drag, even if the pointer jumped there since last frame.
+// zoom with the wheel, the divider (Compare, or CPU | OpenGL) by dragging it; G cycles the
+// renderer. Input is read from ImGui after NewFrame(), when WantCaptureMouse describes this very
+// frame: a press over a panel belongs to the panel and never starts a camera drag, even if the
+// pointer jumped there since last frame.
 
 #include <imgui.h>
 
@@ -16,9 +17,10 @@ namespace {
 /// Window pixels around the divider line that grab it.
 constexpr double kDividerGrab = 6.0;
 
-/// True when a window point is within reach of the Compare divider.
+/// True when a window point is within reach of the divider (Compare, or CPU | OpenGL).
 bool overDivider(const App& app, ImVec2 mouse) {
-    if (!app.compare.enabled || app.compare.display != CompareDisplay::Split) return false;
+    const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
+    if (!plan.twoSides() || app.compare.display != CompareDisplay::Split) return false;
     if (app.view.w <= 0) return false;
     const double x = app.view.x + app.compare.divider * app.view.w;
     const double y = mouse.y;
@@ -31,7 +33,10 @@ void handleInput(App& app) {
     ImGuiIO& io = ImGui::GetIO();
     if (app.keys.resetCamera) app.model.resetCamera();
     if (app.keys.togglePanels) app.ui.showPanels = !app.ui.showPanels;
-    app.keys.resetCamera = app.keys.togglePanels = false;
+    if (app.keys.cycleRenderer)
+        selectRenderer(app.model.rendererChoice, nextRenderer(app.model.rendererChoice),
+                       app.compare);
+    app.keys.resetCamera = app.keys.togglePanels = app.keys.cycleRenderer = false;
 
     if (app.drag.button < 0 && !io.WantCaptureMouse) {
         for (int b = 0; b < 3; ++b) {

@@ -45,13 +45,15 @@ const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings&
     return compose();
 }
 
+ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, CompareDisplay display,
+                       double divider, int heatScale, Framebuffer& shown) {
+    if (display == CompareDisplay::Difference) return diffImages(left, right, &shown, heatScale);
+    composeSplit(left, right, dividerColumn(divider, left.width), shown);
+    return diffImages(left, right);
+}
+
 const Framebuffer& CompareView::compose() {
-    if (display == CompareDisplay::Difference) {
-        diff = diffImages(leftFrame, rightFrame, &shown, heatScale);
-    } else {
-        diff = diffImages(leftFrame, rightFrame);
-        composeSplit(leftFrame, rightFrame, dividerColumn(divider, leftFrame.width), shown);
-    }
+    diff = composeSides(leftFrame, rightFrame, display, divider, heatScale, shown);
     return shown;
 }
 

@@ -45,6 +45,12 @@ struct CompareView {
     const Framebuffer& render(const Scene& scene, const RenderSettings& settings);
 };
 
+/// Compares `left` with `right` (the numbers over the whole frame) and composes `shown`: the
+/// split at `divider` (a fraction of the width) or the heat map up to `heatScale` (0: the
+/// largest error). The Compare view's two interpolations and the CPU | OpenGL view both use it.
+ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, CompareDisplay display,
+                       double divider, int heatScale, Framebuffer& shown);
+
 /// Divider column for a frame width: round(fraction · width), clamped to [0, width].
 int dividerColumn(double fraction, int width);
 

@@ -2,6 +2,10 @@
 // just produced on its own thread while this thread uploads, draws and swaps the previous
 // engine frame; serial (--serial, or the Stats checkbox), it waits for the engine first. Both
 // show a change in the very next frame drawn after the one in which it was made.
+//
+// The OpenGL twin draws on this thread, which owns the window's context. Side by side, both
+// halves show the same state: the engine's picture of this frame is waited for, and the twin
+// renders meanwhile (pipelined) or after it (serial, so neither time holds the other's work).
 
 #include <epoxy/gl.h>
 
@@ -19,6 +23,7 @@
 namespace facet::view {
 int App::frame(Clock::time_point start, bool last) {
     int status = 0;
+    lastTimes = {};
     const auto tEvents = Clock::now();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -34,28 +39,64 @@ int App::frame(Clock::time_point start, bool last) {
     }
     const Camera& final = model.prepareFrame(fbWidth, fbHeight);  // after the panels' edits
     view = letterbox(final.width, final.height, fbWidth, fbHeight);
+    if (model.rendererChoice != lastChoice) {
+        ++rendererLog.switches;
+        lastChoice = model.rendererChoice;
+    }
+    const FramePlan plan = planFrame(model.rendererChoice, compare.enabled);
     const auto tPanels = Clock::now();
 
-    worker->submit(model.scene, model.sceneVersion, model.settings, compare);
-    // Serial, or nothing to show yet: wait for this frame's render before drawing.
-    const bool early = !ui.pipelined || display.width == 0;
+    bool inFlight = false;
     double waited = 0.0;
+    auto submit = [&] {
+        worker->submit(model.scene, model.sceneVersion, model.settings, compare);
+        inFlight = true;
+    };
     auto collect = [&] {
+        if (!inFlight) return;
+        inFlight = false;
         const auto w0 = Clock::now();
         const RenderResult& r = worker->wait(display);
         waited += ms(w0, Clock::now());
         model.stats = r.stats;
         compare.leftStats = r.stats;
         compare.rightStats = r.rightStats;
-        compare.diff = r.diff;
+        if (r.compared) compare.diff = r.diff;
         lastTimes.render = r.renderMs;
         lastTimes.compare = r.compareMs;
+        ++rendererLog.engineFrames;
     };
+    if (plan.engine) submit();
+    // Wait for this frame's engine picture before drawing when serial, when the one in hand is
+    // stale (none yet, or the engine sat out the last frame), or side by side.
+    const bool early = plan.engine && (!ui.pipelined || !engineFresh || plan.sideBySide);
+    bool twinDrew = false;
+    auto drawTwin = [&] {
+        twinDrew = renderTwin(*this);
+        if (!twinDrew) return;
+        lastTimes.twin = twin.ms;
+        lastTimes.twinUpload = twin.stats.uploadMs;
+        lastTimes.twinDraw = twin.stats.drawMs;
+        lastTimes.twinReadback = twin.stats.readbackMs;
+    };
+    if (plan.twin && ui.pipelined) drawTwin();
     if (early) collect();
-    shown = &display;
+    if (plan.twin && !ui.pipelined) drawTwin();
+    if (plan.twin && !twinDrew && !plan.engine) {
+        submit();  // the twin failed (and said why): the engine's picture of this state instead
+        collect();
+    }
+    engineFresh = plan.engine || (plan.twin && !twinDrew);
+    const auto tCompose = Clock::now();
+    if (twinDrew && plan.sideBySide) {
+        shown = &composeSideBySide(*this);
+        lastTimes.compare = ms(tCompose, Clock::now());
+    } else {
+        shown = twinDrew ? &twin.frame : &display;
+    }
     const auto tCollected = Clock::now();
 
-    gl->upload(display);
+    gl->upload(*shown);
     const auto tUpload = Clock::now();
     gl->draw(view, fbWidth, fbHeight);
     // llvmpipe draws on the CPU when the commands are flushed: finishing each stage charges
@@ -78,7 +119,7 @@ int App::frame(Clock::time_point start, bool last) {
     glfwSwapBuffers(window);
     ++frameCount;
     const auto tSwap = Clock::now();
-    if (!early) collect();  // the frame rendered meanwhile becomes the next one shown
+    collect();  // pipelined: the frame rendered meanwhile becomes the next one shown
     const auto tEnd = Clock::now();
 
     lastTimes.upload = ms(tCollected, tUpload);

@@ -6,12 +6,17 @@
 namespace facet::view {
 namespace {
 
-/// Median of one field over frames [begin, end).
+/// Median of one field over frames [begin, end). The renderers' fields are 0 in frames where
+/// that renderer sat out (the other was chosen), and those frames say nothing about its speed.
 double medianOf(const std::vector<FrameTimes>& frames, std::size_t begin,
                 double FrameTimes::*field) {
+    const bool ranOnly = field == &FrameTimes::render || field == &FrameTimes::twin ||
+                         field == &FrameTimes::twinUpload || field == &FrameTimes::twinDraw ||
+                         field == &FrameTimes::twinReadback;
     std::vector<double> v;
     v.reserve(frames.size() - begin);
-    for (std::size_t i = begin; i < frames.size(); ++i) v.push_back(frames[i].*field);
+    for (std::size_t i = begin; i < frames.size(); ++i)
+        if (!ranOnly || frames[i].*field > 0.0) v.push_back(frames[i].*field);
     if (v.empty()) return 0.0;
     const std::size_t mid = v.size() / 2;
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid), v.end());
@@ -25,7 +30,8 @@ FrameTimes mediansFrom(const std::vector<FrameTimes>& frames, std::size_t begin)
     FrameTimes m;
     if (begin >= frames.size()) return m;
     for (double FrameTimes::*field :
-         {&FrameTimes::render, &FrameTimes::compare, &FrameTimes::upload, &FrameTimes::draw,
+         {&FrameTimes::render, &FrameTimes::twin, &FrameTimes::twinUpload, &FrameTimes::twinDraw,
+          &FrameTimes::twinReadback, &FrameTimes::compare, &FrameTimes::upload, &FrameTimes::draw,
           &FrameTimes::ui, &FrameTimes::present, &FrameTimes::wait, &FrameTimes::total})
         m.*field = medianOf(frames, begin, field);
     return m;
@@ -58,10 +64,10 @@ std::string fpsReport(const FrameHistory& history, std::size_t skip) {
     const FrameTimes m = history.median(skip);
     char line[256];
     std::snprintf(line, sizeof line,
-                  "median %.1f fps (%.2f ms: render %.2f, compare %.2f, upload %.2f, draw %.2f, "
-                  "ui %.2f, present %.2f, wait %.2f) over %zu frames",
-                  m.total > 0.0 ? 1000.0 / m.total : 0.0, m.total, m.render, m.compare, m.upload,
-                  m.draw, m.ui, m.present, m.wait, n);
+                  "median %.1f fps (%.2f ms: render %.2f, twin %.2f, compare %.2f, upload %.2f, "
+                  "draw %.2f, ui %.2f, present %.2f, wait %.2f) over %zu frames",
+                  m.total > 0.0 ? 1000.0 / m.total : 0.0, m.total, m.render, m.twin, m.compare,
+                  m.upload, m.draw, m.ui, m.present, m.wait, n);
     return line;
 }
 

@@ -19,14 +19,18 @@ inline double ms(Clock::time_point a, Clock::time_point b) {
 
 /// Milliseconds one frame spent in each stage.
 struct FrameTimes {
-    double render = 0.0;   ///< engine: Renderer::render (both sides in Compare)
-    double compare = 0.0;  ///< Compare: difference and composition
-    double upload = 0.0;   ///< glTexSubImage2D of the frame
-    double draw = 0.0;     ///< OpenGL drawing the frame's textured triangle (llvmpipe: CPU)
-    double ui = 0.0;       ///< ImGui: building the panels and drawing them
-    double present = 0.0;  ///< buffer swap and window events
-    double wait = 0.0;     ///< the main thread waiting for the engine (its thread)
-    double total = 0.0;    ///< start of one frame to the start of the next
+    double render = 0.0;  ///< engine: Renderer::render (both sides in Compare); 0: not run
+    double twin = 0.0;    ///< OpenGL twin: GlRenderer::render, glFinish and readback; 0: not run
+    double twinUpload = 0.0;    ///< ...of which preparing and uploading vertices and texture
+    double twinDraw = 0.0;      ///< ...drawing, on the CPU clock up to glFinish
+    double twinReadback = 0.0;  ///< ...reading the picture back, and the post passes
+    double compare = 0.0;       ///< Compare: difference and composition
+    double upload = 0.0;        ///< glTexSubImage2D of the frame
+    double draw = 0.0;          ///< OpenGL drawing the frame's textured triangle (llvmpipe: CPU)
+    double ui = 0.0;            ///< ImGui: building the panels and drawing them
+    double present = 0.0;       ///< buffer swap and window events
+    double wait = 0.0;          ///< the main thread waiting for the engine (its thread)
+    double total = 0.0;         ///< start of one frame to the start of the next
 };
 
 /// Every frame's times (for medians) and the last `window` totals in order (for the plot).
@@ -41,15 +45,17 @@ struct FrameHistory {
     void push(const FrameTimes& t);
 
     /// Per-stage medians over the frames after the first `skip` ever pushed; zero when none.
+    /// render and the twin's fields count only the frames in which that renderer ran.
     FrameTimes median(std::size_t skip = 0) const;
 
     /// Per-stage medians over the last `count` frames.
     FrameTimes recentMedian(std::size_t count) const;
 };
 
-/// One line: "median 123.4 fps (8.10 ms: render 6.00, compare 0.00, upload 0.20, draw 0.50,
-/// ui 0.80, present 0.60, wait 1.00) over N frames". With the engine on its own thread,
-/// render and compare overlap the other stages and the stages add up to more than the frame.
+/// One line: "median 123.4 fps (8.10 ms: render 6.00, twin 0.00, compare 0.00, upload 0.20,
+/// draw 0.50, ui 0.80, present 0.60, wait 1.00) over N frames". With the engine on its own
+/// thread, render and compare overlap the other stages and the stages add up to more than the
+/// frame.
 std::string fpsReport(const FrameHistory& history, std::size_t skip);
 
 }  // namespace facet::view

@@ -1,40 +1,36 @@
 #pragma once
-// The OpenGL side of showing a CPU frame: one RGBA8 texture (GL_NEAREST, texel for texel at 1:1),
-// the shader program from shaders/frame.vert + frame.frag, and the empty VAO that the core
-// profile requires for the attribute-less fullscreen triangle. Needs a current GL 3.3 context.
+// The OpenGL side of showing a frame (the engine's, the twin's, or both composed): one RGBA8
+// texture (GL_NEAREST, texel for texel at 1:1), the program from shaders/frame.vert +
+// frame.frag (built by facet::gl's shared shader code), and the empty VAO that the core profile
+// requires for the attribute-less fullscreen triangle. Needs a current GL 3.3 context.
 
-#include <string>
-
+#include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
+#include "gl_objects.hpp"
 #include "layout.hpp"
 
 namespace facet::view {
 
-/// Texture, program and VAO for drawing the frame; GL names kept as plain unsigned so this
-/// header does not pull in the GL headers.
+/// Texture, program and VAO for drawing the frame; the handles delete them with the GlFrame
+/// (the context must still be current then).
 class GlFrame {
   public:
-    GlFrame() = default;
-    GlFrame(const GlFrame&) = delete;
-    GlFrame& operator=(const GlFrame&) = delete;
-    /// Releases the GL objects (the context must still be current).
-    ~GlFrame();
-
-    /// Compiles and links the shaders found in `shaderDir`; false with `error` set on failure.
-    bool init(const std::string& shaderDir, std::string& error);
+    /// Builds frame.vert + frame.frag; the Error names the shader file and holds the GLSL log.
+    Status init();
 
     /// Copies the frame into the texture: glTexSubImage2D (RGBA, unsigned byte), or a new
     /// texture image when the size changed.
     void upload(const Framebuffer& frame);
 
     /// Clears the window (bars) and draws the texture into `view` (window pixels, top-left
-    /// origin) of a framebuffer `windowHeight` pixels tall.
+    /// origin) of a framebuffer `windowHeight` pixels tall. It sets every piece of GL state it
+    /// relies on, so whatever ImGui or the OpenGL twin left bound does not matter.
     void draw(const Rect& view, int windowWidth, int windowHeight) const;
 
   private:
-    unsigned program_ = 0;
-    unsigned vao_ = 0;
-    unsigned texture_ = 0;
+    gl::Program program_;
+    gl::VertexArray vao_;
+    gl::TextureName texture_;
     int width_ = 0;
     int height_ = 0;
 };

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "renderer_choice.hpp"
+
 namespace facet::view {
 namespace {
 
@@ -52,9 +54,15 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_flag("--no-vsync", o.noVsync, "Do not wait for the display between frames");
     app.add_flag("--fps-report", o.fpsReport,
                  "At exit, print the median fps and how the frame time splits");
+    app.add_option("--renderer", o.renderer,
+                   "Who draws the frame: cpu (the engine), gl (the OpenGL twin, in this window's "
+                   "context) or split (CPU left, OpenGL right); G cycles them")
+        ->check(CLI::IsMember(choices(rendererNames())))
+        ->capture_default_str();
     app.add_flag("--compare", o.compare, "Start in the Compare view (affine | perspective)");
     app.add_flag("--difference", o.difference,
-                 "Start in the Compare view showing the per-pixel difference as a heat map");
+                 "Start in the Compare view (or --renderer split) showing the per-pixel "
+                 "difference as a heat map");
     app.add_flag("--hide-panels", o.hidePanels, "Start with the panels hidden (Tab shows them)");
     app.add_flag("--serial", o.serial,
                  "Render the next frame only after drawing this one (default: at the same time)");
@@ -94,7 +102,15 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         out.text = "facet-view: --size wants WxH with 1..16384 each, got '" + size + "'";
         return out;
     }
-    if (o.difference) o.compare = true;
+    // The interpolation Compare and the CPU | OpenGL view share one divider: one at a time.
+    if (o.compare && o.renderer != "cpu") {
+        out.exit = true;
+        out.exitCode = 2;
+        out.text = "facet-view: --compare compares two CPU renders; it cannot go with --renderer " +
+                   o.renderer + " (--renderer split already compares CPU and OpenGL)";
+        return out;
+    }
+    if (o.difference && o.renderer == "cpu") o.compare = true;
     if (!parseInterpSpec(o.interp)) {
         out.exit = true;
         out.exitCode = 2;

@@ -11,21 +11,22 @@ namespace facet::view {
 
 /// Everything the command line can say; empty strings and zeros mean "not given".
 struct ViewerOptions {
-    std::string scene;           ///< .scene file; empty: the default scene
-    int width = 0;               ///< --size: window width (0: the scene's, within the screen)
-    int height = 0;              ///< --size: window height
-    bool keepSceneSize = false;  ///< render at the scene's size, letterboxed
-    int frames = 0;              ///< exit after this many frames (0: when the window closes)
-    std::string screenshot;      ///< at exit: the engine frame as PNG
-    std::string windowShot;      ///< at exit: the whole window as PNG
-    std::string statePath;       ///< at exit: camera, light and material as text
-    bool noVsync = false;        ///< swap without waiting for the display
-    bool fpsReport = false;      ///< at exit: median fps and stage split on stdout
-    bool compare = false;        ///< start in the Compare view
-    bool difference = false;     ///< start in the Compare view's difference heat map
-    bool hidePanels = false;     ///< start with the panels hidden (Tab shows them)
-    bool serial = false;         ///< render and draw one after the other (for measuring)
-    std::string texture;         ///< image replacing the scene's texture
+    std::string scene;             ///< .scene file; empty: the default scene
+    int width = 0;                 ///< --size: window width (0: the scene's, within the screen)
+    int height = 0;                ///< --size: window height
+    bool keepSceneSize = false;    ///< render at the scene's size, letterboxed
+    int frames = 0;                ///< exit after this many frames (0: when the window closes)
+    std::string screenshot;        ///< at exit: the engine frame as PNG
+    std::string windowShot;        ///< at exit: the whole window as PNG
+    std::string statePath;         ///< at exit: camera, light and material as text
+    bool noVsync = false;          ///< swap without waiting for the display
+    bool fpsReport = false;        ///< at exit: median fps and stage split on stdout
+    std::string renderer = "cpu";  ///< --renderer: cpu, gl (the OpenGL twin) or split
+    bool compare = false;          ///< start in the Compare view (two CPU interpolations)
+    bool difference = false;       ///< start in the difference heat map (Compare or split)
+    bool hidePanels = false;       ///< start with the panels hidden (Tab shows them)
+    bool serial = false;           ///< render and draw one after the other (for measuring)
+    std::string texture;           ///< image replacing the scene's texture
 
     // Start-up render settings, as `facet render` spells them (already checked when parsed).
     std::string mode = "solid";

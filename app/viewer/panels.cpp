@@ -9,7 +9,8 @@
 namespace facet::view {
 
 void drawPanels(App& app) {
-    if (app.compare.enabled) compareOverlay(app);
+    if (planFrame(app.model.rendererChoice, app.compare.enabled).twin || app.compare.enabled)
+        compareOverlay(app);
     errorPopup(app);
     if (!app.ui.showPanels) return;
 
@@ -22,19 +23,24 @@ void drawPanels(App& app) {
     if (ImGui::Begin("facet", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::PushItemWidth(-140.0f);  // room for the labels on the right
         if (ImGui::CollapsingHeader("Scene")) scenePanel(app);
-        // Open at start: Render and Camera, or Compare alone when the viewer starts comparing.
-        const ImGuiTreeNodeFlags open =
-            app.options.compare ? ImGuiTreeNodeFlags_None : ImGuiTreeNodeFlags_DefaultOpen;
-        if (ImGui::CollapsingHeader("Render", open)) renderPanel(app);
-        if (ImGui::CollapsingHeader("Camera", open)) cameraPanel(app);
+        // Open at start: Render and Camera; Compare alone when the viewer starts comparing two
+        // interpolations; Render and Compare (the renderer, then the numbers) side by side.
+        const bool split = app.options.renderer == "split";
+        auto openIf = [](bool open) {
+            return open ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None;
+        };
+        if (ImGui::CollapsingHeader("Render", openIf(!app.options.compare))) renderPanel(app);
+        if (ImGui::CollapsingHeader("Camera", openIf(!app.options.compare && !split)))
+            cameraPanel(app);
         if (ImGui::CollapsingHeader("Light and material")) lightPanel(app);
         if (ImGui::CollapsingHeader("Texture")) texturePanel(app);
-        if (ImGui::CollapsingHeader("Compare", app.options.compare ? ImGuiTreeNodeFlags_DefaultOpen
-                                                                   : ImGuiTreeNodeFlags_None))
+        if (ImGui::CollapsingHeader("Compare", openIf(app.options.compare || split)))
             comparePanel(app);
         if (ImGui::CollapsingHeader("Screenshot")) screenshotPanel(app);
         ImGui::PopItemWidth();
-        ImGui::TextDisabled("Esc quit, Tab panels, R reset camera, P screenshot");
+        ImGui::TextDisabled(
+            "Esc quit, Tab panels, R reset camera, P screenshot,\n"
+            "G next renderer (CPU, OpenGL, side by side)");
     }
     ImGui::End();
     statsWindow(app);

@@ -1,5 +1,6 @@
-// Compare panel and the labels over the Compare view: which interpolation each side uses, split
-// or difference, and the error numbers of the two renders.
+// Compare panel and the labels over the frame: which interpolation each side uses (or, with
+// the CPU | OpenGL renderer, which renderer), split or difference, and the error numbers of the
+// two pictures.
 
 #include <imgui.h>
 
@@ -24,13 +25,31 @@ void sidePicker(const char* label, InterpSpec& spec) {
     ImGui::PopID();
 }
 
+/// The two sides' names: interpolations, or the renderers side by side.
+void sideLabels(const App& app, std::string& left, std::string& right) {
+    if (app.model.rendererChoice == RendererChoice::Split) {
+        left = std::string(rendererLabel(RendererChoice::Cpu));
+        right = std::string(rendererLabel(RendererChoice::OpenGl));
+    } else {
+        left = interpLabel(app.compare.left);
+        right = interpLabel(app.compare.right);
+    }
+}
+
 }  // namespace
 
 void comparePanel(App& app) {
     CompareView& c = app.compare;
-    ImGui::Checkbox("compare two renders", &c.enabled);
-    sidePicker("left", c.left);
-    sidePicker("right", c.right);
+    const bool sideBySide = app.model.rendererChoice == RendererChoice::Split;
+    bool on = c.enabled;
+    if (ImGui::Checkbox("compare two interpolations", &on))
+        setCompare(on, app.model.rendererChoice, c);
+    if (sideBySide) {
+        ImGui::TextDisabled("left: CPU engine, right: OpenGL twin");
+    } else {
+        sidePicker("left", c.left);
+        sidePicker("right", c.right);
+    }
     int display = c.display == CompareDisplay::Split ? 0 : 1;
     ImGui::RadioButton("split", &display, 0);
     ImGui::SameLine();
@@ -40,7 +59,7 @@ void comparePanel(App& app) {
         sliderDouble("divider", c.divider, 0.0, 1.0, "%.2f");
     else
         ImGui::SliderInt("heat scale", &c.heatScale, 0, 255, c.heatScale ? "%d" : "auto (max)");
-    if (!c.enabled) {
+    if (!c.enabled && !sideBySide) {
         ImGui::TextDisabled("(drag the divider on the image)");
         return;
     }
@@ -65,16 +84,20 @@ void compareOverlay(App& app) {
     };
     const float y =
         static_cast<float>(v.y + v.h) - 28.0f;  // near the bottom: panels sit at the top
+    const FramePlan plan = planFrame(app.model.rendererChoice, c.enabled);
+    if (!plan.twoSides()) {  // the twin alone says so, so no screenshot passes for the engine's
+        if (plan.twin) label(static_cast<float>(v.x + 8), y, "OpenGL twin");
+        return;
+    }
+    std::string left, right;
+    sideLabels(app, left, right);
     if (c.display == CompareDisplay::Difference) {
         label(static_cast<float>(v.x + 8), y,
-              "difference " + interpLabel(c.left) + " vs " + interpLabel(c.right) +
-                  " (black: equal)");
+              "difference " + left + " vs " + right + " (black: equal)");
         return;
     }
     const float split = static_cast<float>(v.x + c.divider * v.w);
-    const std::string right = interpLabel(c.right);
-    label(split - 12.0f - ImGui::CalcTextSize(interpLabel(c.left).c_str()).x, y,
-          interpLabel(c.left));
+    label(split - 12.0f - ImGui::CalcTextSize(left.c_str()).x, y, left);
     label(split + 12.0f, y, right);
 }
 

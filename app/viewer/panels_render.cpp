@@ -1,17 +1,44 @@
-// Render panel: every RenderSettings field the engine exposes, named by the engine's own lists
-// (drawModeNames() and so on), so a new mode shows up here without touching the viewer.
+// Render panel: who draws (the CPU engine, the OpenGL twin, or both side by side), then every
+// RenderSettings field the engine exposes, named by the engine's own lists (drawModeNames() and
+// so on), so a new mode shows up here without touching the viewer. Both renderers read the same
+// settings; where the twin's picture departs from the engine's, the panel says so.
 
 #include <imgui.h>
 
 #include "facet/mesh.hpp"
+#include "gl_renderer.hpp"
 #include "panel_widgets.hpp"
 #include "panels.hpp"
 #include "settings_map.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {
+namespace {
+
+/// The renderer combo, and the twin's departures from the engine for these settings.
+void rendererPicker(App& app) {
+    static const auto names = rendererNames();
+    RendererChoice& choice = app.model.rendererChoice;
+    if (ImGui::BeginCombo("renderer", std::string(rendererLabel(choice)).c_str())) {
+        for (const std::string_view name : names) {
+            const RendererChoice c = parseRenderer(name).value_or(RendererChoice::Cpu);
+            if (ImGui::Selectable(std::string(rendererLabel(c)).c_str(), c == choice))
+                selectRenderer(choice, c, app.compare);
+        }
+        ImGui::EndCombo();
+    }
+    if (choice == RendererChoice::Cpu) return;
+    const std::string differences = GlRenderer::differences(app.model.settings);
+    if (differences.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
+    ImGui::TextWrapped("OpenGL twin: %s", differences.c_str());
+    ImGui::PopStyleColor();
+}
+
+}  // namespace
 
 void renderPanel(App& app) {
+    rendererPicker(app);
     RenderSettings& s = app.model.settings;
     static const auto modes = drawModeNames();
     static const auto shaders = shaderNames();

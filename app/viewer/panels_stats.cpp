@@ -1,5 +1,5 @@
-// Stats window (fps, the frame time split, its history, what the engine drew) and the
-// Screenshot panel.
+// Stats window (fps, the frame time split with the CPU engine's and the OpenGL twin's times
+// side by side, its history, what each drew) and the Screenshot panel.
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -21,6 +21,14 @@ void drawCounts(const char* title, const RenderStats& s) {
                     s.normalsDrawn);
 }
 
+void twinCounts(const GlStats& s) {
+    ImGui::Text("twin: %zu triangles in, %.0f KB sent", s.trianglesIn,
+                static_cast<double>(s.uploadBytes) / 1024.0);
+    if (s.linesDrawn || s.pointsDrawn || s.normalsDrawn)
+        ImGui::Text("twin: %zu lines, %zu points, %zu normals", s.linesDrawn, s.pointsDrawn,
+                    s.normalsDrawn);
+}
+
 }  // namespace
 
 void statsWindow(App& app) {
@@ -37,6 +45,7 @@ void statsWindow(App& app) {
     const FrameTimes m = app.history.recentMedian(60);
     ImGui::Text("%.1f fps, %.2f ms a frame (median of 60)", m.total > 0 ? 1000.0 / m.total : 0.0,
                 m.total);
+    const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
     if (ImGui::BeginTable("split", 2, ImGuiTableFlags_SizingFixedFit)) {
         auto row = [](const char* stage, double ms) {
             ImGui::TableNextRow();
@@ -45,24 +54,40 @@ void statsWindow(App& app) {
             ImGui::TableNextColumn();
             ImGui::Text("%7.2f ms", ms);
         };
-        row("engine render", m.render);
-        // The engine's own split of its last frame (the depth colours are in "raster" for the
-        // depth shader).
-        const RenderStats& e = app.model.stats;
-        row("  clear", e.clearMs);
-        row("  vertices", e.vertexMs);
-        row("  raster + shade", e.rasterMs);
-        row("  post passes", e.postMs);
-        if (app.compare.enabled) row("compare (diff)", m.compare);
+        if (plan.engine) {
+            row("CPU engine render", m.render);
+            // The engine's own split of its last frame (the depth colours are in "raster" for
+            // the depth shader).
+            const RenderStats& e = app.model.stats;
+            row("  clear", e.clearMs);
+            row("  vertices", e.vertexMs);
+            row("  raster + shade", e.rasterMs);
+            row("  post passes", e.postMs);
+        }
+        if (plan.twin) {
+            // Like the engine's time, the twin's ends with the picture in memory: its draw is
+            // timed on the CPU clock up to glFinish, then the readback.
+            row("OpenGL twin render", m.twin);
+            row("  prepare + upload", m.twinUpload);
+            row("  draw (to glFinish)", m.twinDraw);
+            row("  readback + post", m.twinReadback);
+        }
+        if (plan.twoSides()) row("compare (diff)", m.compare);
         row("upload", m.upload);
         row("draw frame", m.draw);
         row("ui", m.ui);
         row("swap + events", m.present);
-        row("waiting for engine", m.wait);
+        if (plan.engine) row("waiting for engine", m.wait);
         ImGui::EndTable();
     }
     // Pipelined, the engine's time overlaps the drawing: the frame costs about the larger part.
     ImGui::Checkbox("engine on its own thread", &app.ui.pipelined);
+    if (plan.twin && !app.rendererLog.device.empty())
+        ImGui::TextDisabled("OpenGL: %s", app.rendererLog.device.c_str());
+    if (plan.engine && plan.twin && app.ui.pipelined)
+        ImGui::TextDisabled(
+            "engine and twin run at once (llvmpipe: on the\nsame cores); untick for separate "
+            "times");
     const std::vector<float>& plot = app.history.plot;
     const float top = plot.empty() ? 1.0f : *std::max_element(plot.begin(), plot.end()) * 1.2f;
     char overlay[48];
@@ -71,12 +96,13 @@ void statsWindow(App& app) {
                      ImVec2(300.0f, 60.0f));
     const Camera& c = app.model.scene.camera;
     ImGui::Text("frame %dx%d", c.width, c.height);
-    if (app.compare.enabled) {
+    if (plan.engineCompare) {
         drawCounts("left: ", app.compare.leftStats);
         drawCounts("right: ", app.compare.rightStats);
-    } else {
-        drawCounts("", app.model.stats);
+    } else if (plan.engine) {
+        drawCounts(plan.twin ? "CPU: " : "", app.model.stats);
     }
+    if (plan.twin) twinCounts(app.twin.stats);
     ImGui::End();
 }
 

@@ -6,9 +6,6 @@
 #ifndef FACET_ASSETS_DIR
 #define FACET_ASSETS_DIR ""
 #endif
-#ifndef FACET_SHADERS_DIR
-#define FACET_SHADERS_DIR ""
-#endif
 
 namespace facet::view {
 
@@ -31,13 +28,6 @@ std::string findResource(const std::string& relative, const std::string& compile
 std::string defaultScenePath() {
     const std::string found = findResource("default.scene", FACET_ASSETS_DIR);
     return found.empty() ? findResource("assets/default.scene", "") : found;
-}
-
-std::string shaderDir() {
-    const std::string found = findResource("frame.vert", FACET_SHADERS_DIR);
-    if (!found.empty()) return fs::path(found).parent_path().string();
-    const std::string copied = findResource("shaders/frame.vert", "");
-    return copied.empty() ? std::string() : fs::path(copied).parent_path().string();
 }
 
 }  // namespace facet::view

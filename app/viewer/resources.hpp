@@ -1,7 +1,8 @@
 #pragma once
-// Finding the files the viewer ships with (the default scene, the GLSL shaders): the source
-// tree's folder compiled in, then beside the executable, then the current folder, so a build
-// runs from anywhere and a moved build still finds copies placed next to it.
+// Finding the files the viewer ships with (the default scene): the source tree's folder
+// compiled in, then beside the executable, then the current folder, so a build runs from
+// anywhere and a moved build still finds copies placed next to it. The GLSL shaders are found
+// by facet::gl (gl_program.hpp), for the viewer and the OpenGL twin alike.
 
 #include <string>
 
@@ -13,8 +14,5 @@ std::string findResource(const std::string& relative, const std::string& compile
 
 /// assets/default.scene (the source tree's assets folder is compiled in).
 std::string defaultScenePath();
-
-/// The folder holding frame.vert and frame.frag.
-std::string shaderDir();
 
 }  // namespace facet::view

@@ -53,6 +53,9 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
         case GLFW_KEY_TAB:
             app->keys.togglePanels = true;
             break;
+        case GLFW_KEY_G:
+            app->keys.cycleRenderer = true;
+            break;
         default:
             break;
     }
@@ -139,6 +142,8 @@ int App::run() {
     ui.vsync = !options.noVsync;
     model.sizePolicy = options.keepSceneSize ? SizePolicy::SceneSize : SizePolicy::FollowWindow;
     compare.enabled = options.compare;
+    model.rendererChoice = parseRenderer(options.renderer).value_or(RendererChoice::Cpu);
+    lastChoice = model.rendererChoice;
     ui.pipelined = !options.serial;
     if (options.difference) compare.display = CompareDisplay::Difference;
     ui.showPanels = !options.hidePanels;
@@ -182,12 +187,8 @@ int App::run() {
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     gl = std::make_unique<GlFrame>();
-    std::string glError;
-    const std::string shaders = shaderDir();
-    if (shaders.empty() || !gl->init(shaders, glError)) {
-        std::fprintf(stderr, "facet-view: %s\n",
-                     shaders.empty() ? "cannot find the shaders folder (frame.vert, frame.frag)"
-                                     : glError.c_str());
+    if (Status e = gl->init()) {  // names the shader file, with the GLSL log
+        std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
         status = 1;
     }
 
@@ -207,9 +208,10 @@ int App::run() {
         status = frame(start, last);
         if (last) break;
     }
-    // The newest engine frame (with the engine on its own thread, one ahead of the screen).
+    // No job is in flight after a frame: `shown` is the newest picture (with the engine on its
+    // own thread, the engine frame collected after the last swap).
     worker->wait(display);
-    shown = &display;
+    if (!shown) shown = &display;
 
     if (status == 0 && !options.screenshot.empty() && shown) {
         if (Status e = saveFrameShot(*shown, options.screenshot)) {
@@ -218,7 +220,8 @@ int App::run() {
         }
     }
     if (!options.statePath.empty()) {
-        if (Status e = writeTextFile(options.statePath, stateText(model, frameCount))) {
+        const std::string text = stateText(model, frameCount) + rendererLogText(rendererLog);
+        if (Status e = writeTextFile(options.statePath, text)) {
             std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
             status = 1;
         }
@@ -230,7 +233,8 @@ int App::run() {
     }
 
     worker.reset();
-    gl.reset();  // GL objects go while the context is current
+    twin.renderer.reset();  // GL objects go while the context is current
+    gl.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

@@ -14,6 +14,8 @@
 #include "layout.hpp"
 #include "options.hpp"
 #include "render_worker.hpp"
+#include "renderer_choice.hpp"
+#include "twin_view.hpp"
 #include "viewer_model.hpp"
 
 struct GLFWwindow;
@@ -51,6 +53,7 @@ struct KeyEvents {
     bool screenshot = false;
     bool resetCamera = false;
     bool togglePanels = false;
+    bool cycleRenderer = false;  ///< G: CPU engine → OpenGL twin → side by side → CPU engine
 };
 
 /// The whole viewer.
@@ -61,7 +64,11 @@ struct App {
     CompareView compare;
     std::unique_ptr<GlFrame> gl;
     std::unique_ptr<RenderWorker> worker;  ///< the engine's thread
-    Framebuffer display;                   ///< the engine frame being shown (from the worker)
+    Framebuffer display;                   ///< the engine's latest frame (from the worker)
+    TwinView twin;                         ///< the OpenGL twin, in this window's context
+    RendererLog rendererLog;               ///< what each renderer did, for --state
+    RendererChoice lastChoice = RendererChoice::Cpu;  ///< the previous frame's, to count switches
+    bool engineFresh = false;  ///< `display` is the engine's frame of the previous frame's state
     FrameHistory history;
     FrameTimes lastTimes;  ///< the previous frame's split, shown by the Stats panel
     UiState ui;
@@ -70,7 +77,7 @@ struct App {
     Rect view;        ///< where the frame is shown in the window
     int fbWidth = 0;  ///< framebuffer size, pixels
     int fbHeight = 0;
-    const Framebuffer* shown = nullptr;  ///< the frame on screen (single or Compare)
+    const Framebuffer* shown = nullptr;  ///< the frame on screen: engine, twin or composed
     long long frameCount = 0;
     bool screenshotRequested = false;  ///< from the key or the button; taken this frame
     bool vsyncApplied = true;          ///< the swap interval last set
@@ -78,8 +85,9 @@ struct App {
     /// Runs until the window closes, --frames is reached or SIGTERM/SIGINT; returns the exit code.
     int run();
 
-    /// One frame, events already polled at `start`: panels, engine, upload, draw, UI, swap.
-    /// `last` also writes --window-shot. Returns 0, or 1 when an output could not be written.
+    /// One frame, events already polled at `start`: panels, engine and/or twin, upload, draw,
+    /// UI, swap. `last` also writes --window-shot. Returns 0, or 1 when an output could not be
+    /// written.
     int frame(std::chrono::steady_clock::time_point start, bool last);
 };
 

@@ -13,6 +13,7 @@
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 #include "orbit.hpp"
+#include "renderer_choice.hpp"
 #include "settings_map.hpp"
 
 namespace facet::view {
@@ -29,6 +30,7 @@ struct ViewerModel {
         false;             ///< false: the scene's own pose bit for bit (frames equal facet render)
     double focal = 512.0;  ///< focal length in pixels for the scene's image size
     RenderSettings settings;
+    RendererChoice rendererChoice = RendererChoice::Cpu;  ///< who draws: engine, twin or both
     SizePolicy sizePolicy = SizePolicy::FollowWindow;
     std::vector<std::string> recent;  ///< scene files opened, most recent first
     std::uint64_t sceneVersion = 0;   ///< counts loads, so copies know when the mesh changed

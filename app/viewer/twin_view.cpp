@@ -1,0 +1,49 @@
+#include "twin_view.hpp"
+
+#include <cstdio>
+#include <utility>
+
+#include "frame_stats.hpp"
+#include "viewer_app.hpp"
+
+namespace facet::view {
+namespace {
+
+bool twinFailed(App& app, const Error& error) {
+    const std::string message = error.what();
+    app.rendererLog.error = message;
+    std::fprintf(stderr, "facet-view: OpenGL twin: %s\n", message.c_str());
+    showError(app, "The OpenGL twin cannot draw this",
+              message + "\n\nBack to the CPU engine; choose the twin again in the Render panel.");
+    selectRenderer(app.model.rendererChoice, RendererChoice::Cpu, app.compare);
+    return false;
+}
+
+}  // namespace
+
+bool renderTwin(App& app) {
+    TwinView& t = app.twin;
+    if (!t.renderer) {
+        // First use: the shaders are read now (variants compile on their first frame), so a
+        // viewer that never chooses the twin never pays for it or fails on it.
+        Result<GlRenderer> made = GlRenderer::create();
+        if (!made) return twinFailed(app, made.error());
+        t.renderer.emplace(std::move(made).value());
+        app.rendererLog.device = t.renderer->device();
+    }
+    const auto t0 = Clock::now();
+    const Result<GlStats> stats = t.renderer->render(app.model.scene, app.model.settings, t.frame);
+    t.ms = ms(t0, Clock::now());
+    if (!stats) return twinFailed(app, stats.error());
+    t.stats = stats.value();
+    ++app.rendererLog.twinFrames;
+    return true;
+}
+
+const Framebuffer& composeSideBySide(App& app) {
+    CompareView& c = app.compare;
+    c.diff = composeSides(app.display, app.twin.frame, c.display, c.divider, c.heatScale, c.shown);
+    return c.shown;
+}
+
+}  // namespace facet::view

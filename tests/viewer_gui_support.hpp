@@ -1,0 +1,136 @@
+#pragma once
+// What the window tests share: running facet-view (and facet) as real processes under their own
+// virtual X display (xvfb-run), driving it with xdotool through viewer_drive.sh, and reading
+// back the PNGs and the --state file it writes.
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "facet/framebuffer.hpp"
+#include "facet/image_diff.hpp"
+#include "facet/texture.hpp"
+#include "state_file.hpp"
+
+namespace viewer_gui {
+
+namespace fs = std::filesystem;
+
+inline const std::string kViewer = FACET_VIEWER;
+inline const std::string kDriver = FACET_VIEWER_DRIVER;
+inline const std::string kScene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+inline const std::string kXvfb = "xvfb-run -a -s '-screen 0 1920x1080x24' ";
+
+struct Outcome {
+    int exitCode = -1;
+    std::string out;  // stdout and stderr together
+};
+
+inline Outcome run(const std::string& cmd) {
+    Outcome r;
+    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf{};
+    while (std::fgets(buf.data(), static_cast<int>(buf.size()), p)) r.out += buf.data();
+    const int status = pclose(p);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+inline bool have(const char* program) {
+    return std::system((std::string("command -v ") + program + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+/// A PNG as a frame (through the engine's image loader); empty when unreadable.
+inline facet::Framebuffer readPng(const fs::path& path) {
+    facet::Framebuffer f;
+    facet::Result<facet::Texture> t = facet::loadTexture(path.string());
+    if (!t) return f;
+    const facet::MipLevel& l = t->level(0);
+    f.resize(l.width, l.height);
+    f.color = l.texels;
+    return f;
+}
+
+inline std::map<std::string, std::string> readState(const fs::path& path) {
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return facet::view::parseState(s.str());
+}
+
+inline double number(const std::map<std::string, std::string>& state, const std::string& key) {
+    const auto it = state.find(key);
+    return it == state.end() ? NAN : std::stod(it->second);
+}
+
+/// Share of the pixels in [x0, x1) × [y0, y1) that differ between a and b.
+inline double differingShare(const facet::Framebuffer& a, const facet::Framebuffer& b, int x0,
+                             int y0, int x1, int y1) {
+    std::size_t n = 0, differ = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++n)
+            differ += facet::pixelError(a.color[a.index(x, y)], b.color[b.index(x, y)]) > 0;
+    return n ? static_cast<double>(differ) / static_cast<double>(n) : 0.0;
+}
+
+/// A fresh folder per test, kept when the test failed; the viewer runs in it.
+class ViewerGui : public ::testing::Test {
+  protected:
+    fs::path dir;
+
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              ("facet_viewer_gui_" + std::to_string(::getpid()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(dir);  // kept for a look when something failed
+    }
+    std::string path(const std::string& name) const { return (dir / name).string(); }
+
+    /// `facet render` (or another facet command) of the default scene with extra options, as
+    /// the reference picture.
+    facet::Framebuffer cliRender(const std::string& name, const std::string& options = "",
+                                 const std::string& command = "render") {
+        const Outcome r = run(std::string(FACET_CLI) + " " + command + " " + kScene + " -o " +
+                              path(name) + " " + options);
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        return readPng(path(name));
+    }
+
+    /// Runs the viewer under its own Xvfb, in `dir`; `env` goes before it ("NAME=value ...").
+    Outcome viewer(const std::string& args, const std::string& env = "") {
+        return run("cd " + dir.string() + " && " + (env.empty() ? "" : "env " + env + " ") +
+                   "timeout 60 " + kXvfb + kViewer + " " + args);
+    }
+
+    /// Drives the viewer with xdotool through tests/viewer_drive.sh.
+    Outcome drive(const std::string& scenario, const std::string& args = "--size 1280x720") {
+        return run("timeout 90 " + kXvfb + "sh " + kDriver + " " + scenario + " " + dir.string() +
+                   " " + kViewer + " --no-vsync " + args);
+    }
+};
+
+}  // namespace viewer_gui
+
+#define REQUIRE_XVFB()                 \
+    if (!viewer_gui::have("xvfb-run")) \
+    GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb)"
+#define REQUIRE_XDOTOOL()             \
+    REQUIRE_XVFB();                   \
+    if (!viewer_gui::have("xdotool")) \
+    GTEST_SKIP() << "xdotool is not installed (Debian package xdotool)"
