@@ -18,4 +18,7 @@ void addGenerateCommand(CLI::App& app, int& exitCode);
 /// `facet render-gl SCENE -o OUT.png [options]`: the OpenGL twin, headless through EGL.
 void addGlRenderCommand(CLI::App& app, int& exitCode);
 
+/// `facet bench [--threads N] [--csv F] [--chart F.png] [--scaling] [--quick] ...`.
+void addBenchCommand(CLI::App& app, int& exitCode);
+
 }  // namespace facet::app

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     facet::app::addRenderCommand(app, exitCode);
     facet::app::addGenerateCommand(app, exitCode);
     facet::app::addGlRenderCommand(app, exitCode);
+    facet::app::addBenchCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {

@@ -6,9 +6,12 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -204,6 +207,167 @@ TEST_F(Cli, GenerateWritesAMeshTheRendererLoads) {
         << "s.off\n0 0 -4\n0 0 0\n0 -1 0\n200\n64 48\n1\n0 0 -8 1\n0.5 0.5 0.5 1\n";
     const Outcome r = run("render " + out("s.scene") + " -o " + out("s.png"));
     EXPECT_EQ(r.exitCode, 0) << r.out;
+}
+
+// facet bench: --quick runs the whole machinery (engine, OpenGL peers per thread count, CSV,
+// chart) on tiny generated cases in about a second.
+struct CsvRow {
+    std::string caseName, config, renderer;
+    int threads = 0, width = 0, height = 0, frames = 0;
+    long triangles = 0;
+    double median = 0, min = 0, max = 0, mtri = 0, mpix = 0;
+};
+
+struct Csv {
+    std::vector<std::string> comments;
+    std::string header;
+    std::vector<CsvRow> rows;
+    bool has(const std::string& comment) const {
+        for (const std::string& c : comments)
+            if (c.rfind(comment, 0) == 0) return true;
+        return false;
+    }
+    int count(const std::string& renderer) const {
+        int n = 0;
+        for (const CsvRow& r : rows) n += r.renderer == renderer;
+        return n;
+    }
+};
+
+Csv readCsv(const std::string& path) {
+    Csv csv;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("# ", 0) == 0) {
+            csv.comments.push_back(line.substr(2));
+            continue;
+        }
+        if (csv.header.empty()) {
+            csv.header = line;
+            continue;
+        }
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        for (std::string field; std::getline(ss, field, ',');) f.push_back(field);
+        if (f.size() != 13) {
+            ADD_FAILURE() << "bad row: " << line;
+            continue;
+        }
+        csv.rows.push_back({f[0], f[1], f[2], std::stoi(f[3]), std::stoi(f[4]), std::stoi(f[5]),
+                            std::stoi(f[7]), std::stol(f[6]), std::stod(f[8]), std::stod(f[9]),
+                            std::stod(f[10]), std::stod(f[11]), std::stod(f[12])});
+    }
+    return csv;
+}
+
+bool haveGnuplot() {
+    return std::system("gnuplot --version >/dev/null 2>&1") == 0;
+}
+
+/// Median within min..max, positive, finite; rates consistent with the median.
+void expectSane(const CsvRow& r) {
+    SCOPED_TRACE(r.caseName + " " + r.config + " " + r.renderer);
+    EXPECT_GT(r.median, 0.0);
+    EXPECT_LT(r.max, 60000.0);
+    EXPECT_LE(r.min, r.median);
+    EXPECT_LE(r.median, r.max);
+    EXPECT_NEAR(r.mpix, static_cast<double>(r.width) * r.height / (r.median * 1e3),
+                1e-2 * r.mpix + 1e-3);
+}
+
+TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
+    const Outcome r = run("bench --quick --threads 2 --csv " + out("b.csv") +
+                          (haveGnuplot() ? " --chart " + out("b.png") : std::string()));
+    const Csv csv = readCsv(out("b.csv"));
+    // Without OpenGL the engine is still measured, and the exit status says what is missing.
+    const bool noGl = csv.has("opengl: unavailable");
+    ASSERT_EQ(r.exitCode, noGl ? 1 : 0) << r.out;
+    EXPECT_NE(r.out.find("[1/32] sphere_quick painter engine t=1 ... "), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("engine/opengl"), std::string::npos) << r.out;
+    for (const char* c : {"date: ", "cpu: ", "cores: ", "opengl: ", "compiler: ", "threads: 1, 2"})
+        EXPECT_TRUE(csv.has(c)) << c;
+    EXPECT_EQ(csv.header,
+              "case,config,renderer,threads,width,height,triangles,frames,median_ms,min_ms,"
+              "max_ms,mtri_per_s,mpix_per_s");
+    // 2 cases x 4 configs x 2 thread counts per renderer, and 3 floors per case.
+    EXPECT_EQ(csv.count("engine"), 16);
+    EXPECT_EQ(csv.count("floor_fill_color") + csv.count("floor_fill_color_depth") +
+                  csv.count("floor_copy_color"),
+              6);
+    if (!noGl) {
+        EXPECT_EQ(csv.count("opengl"), 16) << r.out;
+    }
+    for (const CsvRow& row : csv.rows) {
+        expectSane(row);
+        if (row.renderer == "engine" || row.renderer == "opengl") {
+            EXPECT_EQ(row.frames, 2);
+            EXPECT_GT(row.triangles, 0);
+            EXPECT_TRUE(row.threads == 1 || row.threads == 2);
+        }
+    }
+    if (haveGnuplot()) {
+        EXPECT_EQ(pngSize(out("b.png")), std::make_pair(1600, 1100));
+    }
+}
+
+TEST_F(Cli, BenchScalingQuickSweepsTrianglesAndPixels) {
+    const Outcome r = run("bench --scaling --quick --threads 2 --csv " + out("s.csv") +
+                          (haveGnuplot() ? " --chart " + out("s.png") : std::string()));
+    const Csv csv = readCsv(out("s.csv"));
+    ASSERT_EQ(r.exitCode, csv.has("opengl: unavailable") ? 1 : 0) << r.out;
+    // Three triangle counts and three sizes, Gouraud only by default.
+    EXPECT_EQ(csv.count("engine"), 12);
+    long lastTriangles = 0;
+    for (const CsvRow& row : csv.rows) {
+        expectSane(row);
+        if (row.renderer != "engine" && row.renderer != "opengl") continue;
+        EXPECT_EQ(row.config, "gouraud");
+        if (row.caseName.rfind("tri_", 0) == 0 && row.renderer == "engine" && row.threads == 1) {
+            EXPECT_GT(row.triangles, lastTriangles) << row.caseName;
+            lastTriangles = row.triangles;
+        }
+    }
+    EXPECT_EQ(lastTriangles, 16384);
+    if (haveGnuplot()) {
+        EXPECT_GT(pngSize(out("s.png")).first, 0);
+    }
+}
+
+TEST_F(Cli, BenchFiltersAndFrameCounts) {
+    const Outcome r =
+        run("bench --quick --threads 2 --cases overdraw --configs 'phong|textured' "
+            "--frames 3 --warmup 0 --csv " +
+            out("f.csv"));
+    const Csv csv = readCsv(out("f.csv"));
+    ASSERT_EQ(r.exitCode, csv.has("opengl: unavailable") ? 1 : 0) << r.out;
+    EXPECT_EQ(csv.count("engine"), 4);
+    for (const CsvRow& row : csv.rows) {
+        EXPECT_EQ(row.caseName, "overdraw_quick");
+        if (row.renderer == "engine" || row.renderer == "opengl") {
+            EXPECT_TRUE(row.config == "phong" || row.config == "textured") << row.config;
+            EXPECT_EQ(row.frames, 3);
+        }
+    }
+}
+
+TEST_F(Cli, BenchChartWithoutGnuplotFailsButKeepsTheCsv) {
+    const Outcome r =
+        run("bench --quick --cases sphere --configs painter --csv " + out("g.csv") + " --chart " +
+            out("g.png") + " --gnuplot " + dir.string() + "/no/gnuplot");
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    EXPECT_NE(r.out.find("gnuplot-nox"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(out("g.png")));
+    EXPECT_EQ(readCsv(out("g.csv")).count("floor_fill_color"), 1);
+}
+
+TEST_F(Cli, BenchBadFiltersAreBadInput) {
+    for (const char* args : {"bench --quick --cases '('", "bench --quick --cases no_such_case",
+                             "bench --quick --configs flat", "bench --frames 0"}) {
+        const Outcome r = run(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.out;
+        EXPECT_EQ(countLines(r.out), 1) << args << "\n" << r.out;
+    }
 }
 
 }  // namespace

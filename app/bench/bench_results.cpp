@@ -1,0 +1,45 @@
+#include "bench_results.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace facet::app {
+
+FrameTimes summarize(std::vector<double> ms) {
+    FrameTimes t;
+    if (ms.empty()) return t;
+    std::sort(ms.begin(), ms.end());
+    const std::size_t n = ms.size();
+    t.frames = static_cast<int>(n);
+    t.median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+    t.min = ms.front();
+    t.max = ms.back();
+    return t;
+}
+
+double megaTrianglesPerSecond(const Measurement& m) {
+    if (m.times.median <= 0.0) return 0.0;
+    return static_cast<double>(m.triangles) / (m.times.median * 1e3);
+}
+
+double megaPixelsPerSecond(const Measurement& m) {
+    if (m.times.median <= 0.0) return 0.0;
+    return static_cast<double>(m.width) * m.height / (m.times.median * 1e3);
+}
+
+const Measurement* BenchResults::find(const std::string& caseName, const std::string& config,
+                                      const std::string& renderer, int threads) const {
+    for (const Measurement& m : all)
+        if (m.caseName == caseName && m.config == config && m.renderer == renderer &&
+            m.threads == threads)
+            return &m;
+    return nullptr;
+}
+
+double BenchResults::median(const std::string& caseName, const std::string& config,
+                            const std::string& renderer, int threads) const {
+    const Measurement* m = find(caseName, config, renderer, threads);
+    return m && m->times.frames > 0 ? m->times.median : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace facet::app

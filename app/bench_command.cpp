@@ -1,0 +1,216 @@
+// `facet bench`: times the engine against the OpenGL twin on a fixed suite (or, with --scaling,
+// on a triangle and a pixel sweep), at one thread and at all cores, and prints a table, a CSV
+// and a chart. The OpenGL side runs in child processes (app/bench/gl_peer.hpp).
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench/bench_chart.hpp"
+#include "bench/bench_csv.hpp"
+#include "bench/bench_options.hpp"
+#include "bench/bench_suite.hpp"
+#include "bench/bench_table.hpp"
+#include "bench/bench_timing.hpp"
+#include "bench/gl_peer.hpp"
+#include "bench/machine_info.hpp"
+#include "commands.hpp"
+#include "facet/image_io.hpp"
+
+namespace facet::app {
+namespace {
+
+/// One line per measurement on stderr: "[12/160] bunny_1080p phong engine t=2 ... 23.1 ms".
+struct Progress {
+    int total = 0;
+    int done = 0;
+    bool open = false;  // a line was begun and not finished
+
+    void begin(const std::string& caseName, const std::string& config, const char* renderer,
+               int threads) {
+        std::fprintf(stderr, "[%d/%d] %s %s %s t=%d ... ", ++done, total, caseName.c_str(),
+                     config.c_str(), renderer, threads);
+        open = true;
+    }
+    void end(const FrameTimes& t) {
+        std::fprintf(stderr, "%.3g ms (min %.3g, max %.3g)\n", t.median, t.min, t.max);
+        open = false;
+    }
+    void fail() {
+        if (open) std::fprintf(stderr, "failed\n");
+        open = false;
+    }
+};
+
+Measurement measurement(const BenchCase& c, const std::string& config, const char* renderer,
+                        int threads, const FrameTimes& t) {
+    return {
+        c.name,           config, renderer, threads, c.scene.camera.width, c.scene.camera.height,
+        triangleCount(c), t};
+}
+
+const BenchCase* findCase(const BenchSuite& suite, const std::string& name) {
+    for (const BenchCase& c : suite.cases)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+void measureEngine(const BenchOptions& o, const BenchSuite& suite, int threads, Progress& progress,
+                   BenchResults& results) {
+    Renderer renderer;
+    Framebuffer frame;
+    for (const BenchCase& c : suite.cases)
+        for (const BenchConfig& config : suite.configs) {
+            progress.begin(c.name, config.name, kEngine, threads);
+            const FrameTimes t = timeEngine(renderer, c, config, threads, framePlan(o), frame);
+            progress.end(t);
+            results.all.push_back(measurement(c, config.name, kEngine, threads, t));
+            if (!o.images.empty()) {
+                const std::string name =
+                    c.name + "_" + config.name + "_engine_t" + std::to_string(threads) + ".png";
+                if (Status st = writePng(frame, (std::filesystem::path(o.images) / name).string()))
+                    std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
+            }
+        }
+}
+
+/// Runs the peer for one LP_NUM_THREADS; false when OpenGL failed (message printed).
+bool measureOpenGl(const BenchOptions& o, const BenchSuite& suite, int threads, Progress& progress,
+                   BenchResults& results) {
+    PeerEvents events;
+    events.info = [&](const std::string& renderer) { results.glRenderer = renderer; };
+    events.start = [&](const std::string& c, const std::string& config) {
+        progress.begin(c, config, kOpenGl, threads);
+    };
+    events.result = [&](const std::string& name, const std::string& config, const FrameTimes& t) {
+        progress.end(t);
+        if (const BenchCase* c = findCase(suite, name))
+            results.all.push_back(measurement(*c, config, kOpenGl, threads, t));
+    };
+    if (Status st = runGlPeerProcess(o, threads, events)) {
+        progress.fail();
+        std::fprintf(stderr, "facet bench: OpenGL with LP_NUM_THREADS=%d: %s\n", threads,
+                     st->what().c_str());
+        if (results.glRenderer.empty()) results.glRenderer = "unavailable: " + st->what();
+        return false;
+    }
+    return true;
+}
+
+int runBench(const BenchOptions& o) {
+    if (o.peer) return runGlPeer(o);
+    const auto start = std::chrono::steady_clock::now();
+    const MachineInfo machine = collectMachineInfo();
+    // Say at once that the chart will fail, rather than after minutes of measuring.
+    Status gnuplot = o.chart.empty() ? std::nullopt : checkGnuplot(o.gnuplot);
+    if (gnuplot)
+        std::fprintf(stderr, "facet bench: warning: %s; the table and CSV will still be written\n",
+                     gnuplot->what().c_str());
+    Result<BenchSuite> built = buildSuite(o);
+    if (!built) {
+        std::fprintf(stderr, "facet bench: %s\n", built.error().what().c_str());
+        return kBadInput;
+    }
+    const BenchSuite& suite = built.value();
+    for (const SkippedCase& s : suite.skipped)
+        std::fprintf(stderr, "facet bench: skipping %s: %s\n", s.name.c_str(), s.reason.c_str());
+    if (suite.cases.empty() || suite.configs.empty()) {
+        std::fprintf(stderr, "facet bench: no %s matches (--cases '%s', --configs '%s')\n",
+                     suite.cases.empty() ? "case" : "config", o.cases.c_str(), o.configs.c_str());
+        return kBadInput;
+    }
+    if (!o.images.empty()) std::filesystem::create_directories(o.images);
+
+    std::vector<int> threads = {1};
+    if (allCoresThreads(o) > 1) threads.push_back(allCoresThreads(o));
+    Progress progress;
+    progress.total =
+        static_cast<int>(suite.cases.size() * suite.configs.size() * threads.size() * 2);
+    BenchResults results;
+    for (const BenchCase& c : suite.cases)
+        for (Measurement& m : measureFloors(c, framePlan(o).frames)) results.all.push_back(m);
+    for (int t : threads) measureEngine(o, suite, t, progress, results);
+    bool glFailed = false;
+    for (int t : threads)
+        if (!measureOpenGl(o, suite, t, progress, results)) {
+            glFailed = true;
+            break;
+        }
+
+    printBenchTable(stdout, suite, results, threads);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("\n%s on %s (%d cores, load average %s at start), OpenGL: %s; took %.0f s\n",
+                machine.date.c_str(), machine.cpu.c_str(), machine.cores, machine.load.c_str(),
+                results.glRenderer.c_str(), seconds);
+    std::fflush(stdout);
+
+    // Without OpenGL the run did not do what it is for (the comparison): say so in the status,
+    // after writing what was measured.
+    int code = glFailed ? kFailed : kOk;
+    if (!o.csv.empty()) {
+        const RunDescription run{
+            std::string(o.scaling ? "scaling" : "suite") + (o.quick ? ", quick" : ""), threads,
+            framePlan(o)};
+        if (Status st = writeBenchCsv(o.csv, machine, run, suite, results)) {
+            std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
+            code = kFailed;
+        }
+    }
+    if (!o.chart.empty()) {
+        const ChartRequest req{o.chart, o.gnuplot,
+                               "facet bench" + std::string(o.scaling ? " --scaling" : "") + ": " +
+                                   machine.cpu + ", " + std::to_string(machine.cores) +
+                                   " cores; OpenGL " + results.glRenderer + "; " + machine.date,
+                               threads};
+        Status st = gnuplot     ? gnuplot
+                    : o.scaling ? writeScalingChart(req, suite, results)
+                                : writeSuiteChart(req, suite, results);
+        if (st) {
+            std::fprintf(stderr, "facet bench: --chart: %s\n", st->what().c_str());
+            code = kFailed;
+        }
+    }
+    return code;
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app, int& exitCode) {
+    auto o = std::make_shared<BenchOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "bench", "Time the engine against the OpenGL twin (llvmpipe) on a fixed suite");
+    cmd->add_option("--threads", o->threads,
+                    "The 'all cores' thread count, measured besides 1 (0: every core)")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str();
+    cmd->add_option("--csv", o->csv, "Write every measurement to this CSV file");
+    cmd->add_option("--chart", o->chart, "Draw a PNG chart with gnuplot");
+    cmd->add_flag("--scaling", o->scaling,
+                  "Sweep triangles (1k..1M) and pixels (0.25..8 M) instead of the suite");
+    cmd->add_flag("--quick", o->quick, "Tiny generated cases and 2 frames: checks it all runs");
+    cmd->add_option("--cases", o->cases, "Only cases whose name matches this regex");
+    cmd->add_option("--configs", o->configs,
+                    "Only configs matching this regex (painter, gouraud, phong, textured; "
+                    "--scaling: gouraud by default)");
+    cmd->add_option("--frames", o->frames, "Timed frames per measurement (default 9; quick 2)")
+        ->check(CLI::Range(1, 100000));
+    cmd->add_option("--warmup", o->warmup, "Untimed frames first (default 2; quick 1)")
+        ->check(CLI::Range(0, 1000));
+    cmd->add_option("--budget", o->budget,
+                    "Seconds of timed frames after which a measurement stops once it has 3 "
+                    "(0: always --frames)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    cmd->add_option("--shared", o->shared, "The shared data folder (course scenes, bunny, Spot)");
+    cmd->add_option("--images", o->images, "Write the last frame of each measurement here");
+    cmd->add_option("--gnuplot", o->gnuplot, "The gnuplot executable")->capture_default_str();
+    // The OpenGL side re-runs this command in a child process (bench/gl_peer.hpp).
+    cmd->add_flag("--peer", o->peer)->group("");
+    cmd->callback([o, &exitCode] { exitCode = runBench(*o); });
+}
+
+}  // namespace facet::app
