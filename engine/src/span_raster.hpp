@@ -16,24 +16,16 @@
 #include <cstdint>
 #include <cstring>
 
-#include <xmmintrin.h>
-
 #include "fragment.hpp"
+#include "lanes.hpp"
+#include "texture_lanes.hpp"
 #include "triangle_setup.hpp"
-
-// The vector types never cross a library boundary, so GCC's note that their calling convention
-// differs with and without AVX does not apply. Not popped: GCC reports it at the end of the
-// including file, for the templates instantiated there.
-#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace facet::detail {
 
-inline constexpr int kLanes = 8;
 /// Boxes narrower than this take the scalar loop: a dense mesh's small triangles cover one to
 /// three pixels per row, too few to fill eight lanes or to pay for the span's divisions.
 inline constexpr int kNarrowBox = 16;
-using Float8 = float __attribute__((vector_size(4 * kLanes)));
-using Int8 = std::int32_t __attribute__((vector_size(4 * kLanes)));
 
 /// The covered pixels [lo, hi] of a row whose edge values at pixel x0 are e[i] (steps stepX[i]
 /// per pixel), within [x0, x1]; false when none. Exact: E(x) ≥ 0 solved in integers per edge.
@@ -58,13 +50,6 @@ inline bool coveredSpan(const std::int64_t (&e)[3], const std::int64_t (&stepX)[
     return true;
 }
 
-/// Bit i set where lane i of a comparison is true: movmskps on each half.
-[[gnu::always_inline]] inline unsigned laneMask(Int8 condition) {
-    __m128 half[2];
-    std::memcpy(half, &condition, sizeof condition);
-    return static_cast<unsigned>(_mm_movemask_ps(half[0]) | (_mm_movemask_ps(half[1]) << 4));
-}
-
 /// The plane p at eight pixels: the scalar Planes::eval, lane by lane.
 [[gnu::always_inline]] inline Float8 eval8(const float (&p)[3], Float8 dx, float dy) {
     return p[0] + p[1] * dx + p[2] * dy;
@@ -77,18 +62,6 @@ struct Vec3x8 {
 
 [[gnu::always_inline]] inline Float8 dot8(const Vec3x8& a, const Vec3x8& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;  // glm::dot's order: (x + y) + z
-}
-
-/// Square roots of eight lanes: sqrtps (correctly rounded, like std::sqrt) on each half, as
-/// std::sqrt itself is not vectorized while it may set errno.
-[[gnu::always_inline]] inline Float8 sqrt8(Float8 v) {
-    __m128 half[2];
-    std::memcpy(half, &v, sizeof v);
-    half[0] = _mm_sqrt_ps(half[0]);
-    half[1] = _mm_sqrt_ps(half[1]);
-    Float8 out;
-    std::memcpy(&out, half, sizeof out);
-    return out;
 }
 
 /// normalizeOrZero() lane by lane.
@@ -134,6 +107,11 @@ struct Vec3x8 {
 template <class V>
 inline constexpr bool kVectorColor =
     V::kShader == ShaderKind::Simple || V::kShader == ShaderKind::Painter;
+
+/// Whether V is a bare bilinear texel, sampled for eight lanes at once.
+template <class V>
+inline constexpr bool kVectorTexture =
+    V::kShader == ShaderKind::Texture&& V::kFilter == TextureFilter::Bilinear && !V::kCombine;
 
 /// The packed colours of eight pixels of an untextured variant from their varyings.
 template <class V>
@@ -202,9 +180,14 @@ template <class V>
             std::uint32_t* crow = fb.color.data() + rowStart + static_cast<std::size_t>(x);
             // Eight lanes at once pay off only when most are live: a dense mesh's small
             // triangles leave one to three, which the scalar loop below shades cheaper.
-            if constexpr (kVectorColor<V>) {
+            if constexpr (kVectorColor<V> || kVectorTexture<V>) {
                 if (__builtin_popcount(pass) >= kLanes / 2) {
-                    const Int8 c = colors8<V>(a, k, pass);
+                    Int8 c;
+                    if constexpr (kVectorTexture<V>)
+                        c = bilinearPacked8(k.texture->level(0), a[V::kLayout.uvAt()],
+                                            a[V::kLayout.uvAt() + 1]);
+                    else
+                        c = colors8<V>(a, k, pass);
                     if (pass == 0xFFu) {  // the inside of a wide triangle: two plain stores
                         if constexpr (depthTested(V::kShader))
                             std::memcpy(zrow, &depth, sizeof depth);
