@@ -30,7 +30,8 @@ using ScreenPolygon = SmallPolygon<glm::dvec2, 8>;
 /// Where the edge a-b crosses w = near, given the signed distances da = a.w − near and
 /// db = b.w − near of opposite signs. Computed from the inside end whatever the edge's direction,
 /// so both triangles sharing the edge (and its wireframe line) get the same vertex.
-inline ClipVertex crossNear(const ClipVertex& a, const ClipVertex& b, float da, float db) {
+inline ClipVertex crossNear(const ClipVertex& a, const ClipVertex& b, float da, float db,
+                            float near) {
     const bool aInside = da >= 0.0f;
     const ClipVertex& in = aInside ? a : b;
     const ClipVertex& out = aInside ? b : a;
@@ -38,6 +39,11 @@ inline ClipVertex crossNear(const ClipVertex& a, const ClipVertex& b, float da, 
     const float dout = aInside ? db : da;
     const float t = din / (din - dout);
     ClipVertex v{in.pos + t * (out.pos - in.pos), {}};
+    // The new vertex lies on the plane by construction. In float, w = in.w + t·(out.w − in.w)
+    // misses it by in.w's rounding: far vertices (w ~ 1e7) put it on the wrong side of a small
+    // near plane, even below 0, and the whole triangle vanished. x and y carry the same relative
+    // error, which only moves a point that is far outside the image anyway.
+    v.pos.w = near;
     for (std::size_t k = 0; k < v.a.size(); ++k) v.a[k] = in.a[k] + t * (out.a[k] - in.a[k]);
     return v;
 }
@@ -51,7 +57,7 @@ inline NearPolygon clipNear(const ClipVertex (&tri)[3], float near) {
         const float da = a.pos.w - near;
         const float db = b.pos.w - near;
         if (da >= 0.0f) out.push(a);
-        if ((da >= 0.0f) != (db >= 0.0f)) out.push(crossNear(a, b, da, db));
+        if ((da >= 0.0f) != (db >= 0.0f)) out.push(crossNear(a, b, da, db, near));
     }
     return out;
 }
@@ -61,7 +67,7 @@ inline bool clipSegmentNear(ClipVertex& a, ClipVertex& b, float near) {
     const float da = a.pos.w - near;
     const float db = b.pos.w - near;
     if (!(da >= 0.0f) && !(db >= 0.0f)) return false;  // also drops NaN ends
-    if (!(da >= 0.0f) || !(db >= 0.0f)) (da >= 0.0f ? b : a) = crossNear(a, b, da, db);
+    if (!(da >= 0.0f) || !(db >= 0.0f)) (da >= 0.0f ? b : a) = crossNear(a, b, da, db, near);
     return true;
 }
 

@@ -8,9 +8,11 @@
 
 #include <xmmintrin.h>
 
-// The vector types never cross a library boundary, so GCC's note that their calling convention
-// differs with and without AVX does not apply. Not popped: GCC reports it at the end of the
-// including file, for the templates instantiated there.
+// GCC notes that these types are passed differently with and without AVX. That matters: the span
+// loop is compiled for both (target_clones), so a vector must never cross a call that is not
+// inlined, or the AVX2 clone and a baseline callee disagree on where it is (seen as a crash in
+// an unoptimised build). Every function taking or returning one is always_inline, and no lambda
+// takes one. Not popped: GCC reports it at the end of the including file.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace facet::detail {

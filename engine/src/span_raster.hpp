@@ -80,6 +80,12 @@ struct Vec3x8 {
     return __builtin_convertvector(v * 255.0f + 0.5f, Int8);
 }
 
+/// glm::clamp(c, 0, 1) lane by lane (NaN stays NaN, as there).
+[[gnu::always_inline]] inline Float8 clamp01x8(Float8 c) {
+    const Float8 zero = {}, one = zero + 1.0f;
+    return c < 0.0f ? zero : (c > 1.0f ? one : c);
+}
+
 /// lightIntensity() and shade() for eight pixels: the same operations in the same order; only
 /// pow runs lane by lane, and only for the lanes in `live` (it is most of the cost).
 [[gnu::always_inline]] inline Vec3x8 light8(const Vec3x8& rgb, const Vec3x8& p, const Vec3x8& n,
@@ -99,8 +105,8 @@ struct Vec3x8 {
         if (live >> i & 1u) specular[i] = std::pow(nh[i], f.shininess);
     const Float8 lit = f.diffuse * nl + f.specular * specular;
     const Float8 intensity = f.ambientTerm + (nl > 0.0f ? lit : zero);
-    auto clamp01 = [&](Float8 c) { return c < 0.0f ? zero : (c > 1.0f ? one : c); };
-    return {clamp01(rgb.x * intensity), clamp01(rgb.y * intensity), clamp01(rgb.z * intensity)};
+    return {clamp01x8(rgb.x * intensity), clamp01x8(rgb.y * intensity),
+            clamp01x8(rgb.z * intensity)};
 }
 
 /// Whether V's colour can be computed for eight lanes at once (no texture lookups).
