@@ -21,4 +21,7 @@ void addGlRenderCommand(CLI::App& app, int& exitCode);
 /// `facet bench [--threads N] [--csv F] [--chart F.png] [--scaling] [--quick] ...`.
 void addBenchCommand(CLI::App& app, int& exitCode);
 
+/// `facet accuracy SCENE... [--csv F] [--chart F.png] [--samples N] [--frames N]`.
+void addAccuracyCommand(CLI::App& app, int& exitCode);
+
 }  // namespace facet::app

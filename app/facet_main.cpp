@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     facet::app::addGenerateCommand(app, exitCode);
     facet::app::addGlRenderCommand(app, exitCode);
     facet::app::addBenchCommand(app, exitCode);
+    facet::app::addAccuracyCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {

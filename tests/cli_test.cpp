@@ -370,4 +370,55 @@ TEST_F(Cli, BenchBadFiltersAreBadInput) {
     }
 }
 
+// facet accuracy on the course's brick wall: one CSV row per method (5 interpolations, 3
+// filters, 2 lightings), `#` header lines, and perspective no worse than affine.
+TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
+    const std::string course = std::string(FACET_SHARED_DIR) + "/data/course/";
+    if (!fs::exists(course + "brick.jpg")) GTEST_SKIP() << "shared data not available";
+    const Outcome r = run("accuracy " + course + "example_textured.scene --texture " + course +
+                          "brick.jpg --samples 2 --frames 1 --warmup 0 --csv " + out("a.csv"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("[10/10] example_textured lighting phong:"), std::string::npos) << r.out;
+    std::ifstream csv(out("a.csv"));
+    std::string line;
+    int comments = 0;
+    std::vector<std::vector<std::string>> rows;
+    while (std::getline(csv, line)) {
+        if (line.rfind("#", 0) == 0) {
+            ++comments;
+            continue;
+        }
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    EXPECT_GE(comments, 3);
+    ASSERT_EQ(rows.size(), 11u);  // header + 10 methods
+    ASSERT_EQ(rows[0].size(), 14u);
+    EXPECT_EQ(rows[0][9], "rmse");
+    double affine = -1.0, perspective = -1.0;
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        ASSERT_EQ(rows[k].size(), 14u) << k;
+        EXPECT_EQ(rows[k][0], "example_textured");
+        EXPECT_EQ(rows[k][3], "512");
+        EXPECT_GT(std::stod(rows[k][6]), 0.0);  // median ms
+        if (rows[k][2] == "affine") affine = std::stod(rows[k][9]);
+        if (rows[k][2] == "perspective") perspective = std::stod(rows[k][9]);
+    }
+    ASSERT_GE(affine, 0.0);
+    ASSERT_GE(perspective, 0.0);
+    EXPECT_LE(perspective, affine);
+}
+
+TEST_F(Cli, AccuracyBadInputIsOneLine) {
+    for (const std::string& args :
+         {"accuracy " + out("missing.scene"),
+          std::string("accuracy ") + FACET_ASSETS_DIR + "/default.scene --samples 0"}) {
+        const Outcome r = run(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.out;
+        EXPECT_EQ(countLines(r.out), 1) << args << "\n" << r.out;
+    }
+}
+
 }  // namespace

@@ -110,6 +110,10 @@ std::string medians(const BenchResults& r, const std::string& c, const std::stri
 
 }  // namespace
 
+Status runGnuplotScript(const std::string& gnuplot, const std::vector<std::string>& args) {
+    return runGnuplot(gnuplot, args, false);
+}
+
 Status checkGnuplot(const std::string& gnuplot) {
     return runGnuplot(gnuplot, {"--version"}, true);
 }

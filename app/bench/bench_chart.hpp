@@ -20,6 +20,10 @@ struct ChartRequest {
     std::vector<int> threads;
 };
 
+/// Runs gnuplot with `args` (e.g. {"-e", variables, script}) and waits; an Error, saying how to
+/// install it, when it cannot start or fails. Other commands' charts (facet accuracy) use it.
+Status runGnuplotScript(const std::string& gnuplot, const std::vector<std::string>& args);
+
 /// Checks that `gnuplot` runs; the Error says how to install it.
 Status checkGnuplot(const std::string& gnuplot);
 

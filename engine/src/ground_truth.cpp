@@ -1,0 +1,76 @@
+// Ground truth by supersampling the reference path (ground_truth.hpp).
+//
+// The reference renders the scene at N times the size: width·N, height·N and focal·N. The
+// principal point is half the image size (conventions §4), so it scales with it, and the big
+// image's pixel centre (I + ½, J + ½) lands at ((I + ½)/N, (J + ½)/N) in the frame's pixels:
+// the sub-sample centres sit at (k + ½)/N inside each pixel, an N×N grid that covers the pixel
+// evenly. Averaging each N×N block (a box filter) approximates the integral of the image over
+// the pixel's square.
+//
+// Textures: each sub-sample reads level 0 bilinearly, so the N² samples together average the
+// texture over the pixel's footprint on the surface, which is what a mip level only guesses at.
+// Lighting is Phong (per sub-sample) and interpolation perspective-correct, the exact forms.
+//
+// Colours stay in double until the average, and are clamped per sub-sample first, as the
+// display would clamp each of them; nothing is rounded to 8 bits.
+
+#include "facet/ground_truth.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "facet/reference.hpp"
+
+namespace facet {
+
+RenderSettings groundTruthSettings(const RenderSettings& settings) {
+    RenderSettings s = settings;
+    s.mode = DrawMode::Solid;
+    s.interp = Interp::Perspective;
+    if (s.lighting == Lighting::Gouraud) s.lighting = Lighting::Phong;
+    s.filter = TextureFilter::Bilinear;
+    s.showNormals = false;
+    s.depthLegend = false;
+    return s;
+}
+
+GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings, int samples) {
+    const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
+    Scene big = scene;  // the mesh is copied once; the texture is shared
+    big.camera.width = scene.camera.width * n;
+    big.camera.height = scene.camera.height * n;
+    big.camera.focal = scene.camera.focal * n;
+    const reference::Image image = reference::render(big, groundTruthSettings(settings));
+
+    GroundTruth truth;
+    truth.width = scene.camera.width;
+    truth.height = scene.camera.height;
+    truth.samples = n;
+    const std::size_t pixels = static_cast<std::size_t>(truth.width) * truth.height;
+    truth.color.assign(pixels, glm::vec3(0.0f));
+    truth.coverage.assign(pixels, 0.0f);
+    const double perSample = 1.0 / (static_cast<double>(n) * n);
+    for (int y = 0; y < truth.height; ++y) {
+        for (int x = 0; x < truth.width; ++x) {
+            glm::dvec3 sum(0.0);
+            int covered = 0;
+            for (int sy = 0; sy < n; ++sy) {
+                const std::size_t row = static_cast<std::size_t>(y * n + sy) * image.width;
+                for (int sx = 0; sx < n; ++sx) {
+                    const std::size_t i = row + static_cast<std::size_t>(x * n + sx);
+                    sum += glm::clamp(image.color[i], 0.0, 1.0);
+                    // Depth-writing shaders leave a finite depth wherever a triangle drew (the
+                    // Simple shader writes none, so its coverage stays 0).
+                    covered += std::isfinite(image.depth[i]) ? 1 : 0;
+                }
+            }
+            const std::size_t p = static_cast<std::size_t>(y) * truth.width + x;
+            truth.color[p] = glm::vec3(sum * perSample);
+            truth.coverage[p] = static_cast<float>(covered * perSample);
+        }
+    }
+    return truth;
+}
+
+}  // namespace facet
