@@ -40,4 +40,17 @@ using Int8 = std::int32_t __attribute__((vector_size(4 * kLanes)));
     return static_cast<unsigned>(_mm_movemask_ps(half[0]) | (_mm_movemask_ps(half[1]) << 4));
 }
 
+/// toByte() lane by lane: clamp to [0, 1] (NaN to 0), scale, round half up.
+[[gnu::always_inline]] inline Int8 toByte8(Float8 c) {
+    const Float8 zero = {}, one = zero + 1.0f;
+    const Float8 v = c > 0.0f ? (c < 1.0f ? c : one) : zero;
+    return __builtin_convertvector(v * 255.0f + 0.5f, Int8);
+}
+
+/// packColor() lane by lane: opaque RGBA8, R in the low byte.
+[[gnu::always_inline]] inline Int8 packColor8(Float8 r, Float8 g, Float8 b) {
+    return toByte8(r) | (toByte8(g) << 8) | (toByte8(b) << 16) |
+           static_cast<std::int32_t>(0xFF000000u);
+}
+
 }  // namespace facet::detail

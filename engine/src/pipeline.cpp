@@ -265,14 +265,14 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     Clock::time_point t = Clock::now();
     const Camera& cam = scene.camera;
     frame.resize(cam.width, cam.height);
-    clearFrame(frame, rgbaFromHex(settings.background), resolveThreads(settings.threads));
+    const int threads = resolveThreads(settings.threads);
+    clearFrame(frame, rgbaFromHex(settings.background), threads);
     const double clearMs = msSince(t);
     // The transform is built in double and applied in float: one matrix, no per-vertex doubles.
     const glm::mat4 clipFromWorldF(clipFromWorld(cam));
     const Mesh& mesh = scene.mesh;
     const auto& positions = mesh.positions;
     clip_.resize(positions.size());
-    const int threads = resolveThreads(settings.threads);
     const auto vertexCount = static_cast<std::ptrdiff_t>(positions.size());
 #pragma omp parallel for num_threads(threads) if (vertexCount > kParallelVertices)
     for (std::ptrdiff_t i = 0; i < vertexCount; ++i)

@@ -73,13 +73,6 @@ struct Vec3x8 {
     return {v.x * scale, v.y * scale, v.z * scale};
 }
 
-/// clamp(c, 0, 1) then toByte(), lane by lane (NaN to 0 as there).
-[[gnu::always_inline]] inline Int8 toByte8(Float8 c) {
-    const Float8 zero = {}, one = zero + 1.0f;
-    const Float8 v = c > 0.0f ? (c < 1.0f ? c : one) : zero;
-    return __builtin_convertvector(v * 255.0f + 0.5f, Int8);
-}
-
 /// glm::clamp(c, 0, 1) lane by lane (NaN stays NaN, as there).
 [[gnu::always_inline]] inline Float8 clamp01x8(Float8 c) {
     const Float8 zero = {}, one = zero + 1.0f;
@@ -97,9 +90,8 @@ struct Vec3x8 {
     const Vec3x8 v = normalize8({k.eye.x - p.x, k.eye.y - p.y, k.eye.z - p.z});
     const Vec3x8 h = normalize8({l.x + v.x, l.y + v.y, l.z + v.z});
     const Float8 nl = dot8(n, l);
-    const Float8 zero = {}, one = zero + 1.0f;
-    Float8 nh = dot8(n, h);
-    nh = nh < 0.0f ? zero : (nh > 1.0f ? one : nh);  // std::clamp(nh, 0, 1)
+    const Float8 zero = {};
+    const Float8 nh = clamp01x8(dot8(n, h));  // std::clamp(nh, 0, 1): the same for NaN too
     Float8 specular = {};
     for (int i = 0; i < kLanes; ++i)
         if (live >> i & 1u) specular[i] = std::pow(nh[i], f.shininess);
@@ -131,8 +123,7 @@ template <class V>
         const Vec3x8 n = normalize8({a[ni], a[ni + 1], a[ni + 2]});
         rgb = light8(rgb, {a[pi], a[pi + 1], a[pi + 2]}, n, k, live);
     }
-    return toByte8(rgb.x) | (toByte8(rgb.y) << 8) | (toByte8(rgb.z) << 16) |
-           static_cast<std::int32_t>(0xFF000000u);
+    return packColor8(rgb.x, rgb.y, rgb.z);
 }
 
 /// The triangle loop of an affine or perspective variant V without derivatives.

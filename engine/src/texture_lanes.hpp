@@ -55,19 +55,16 @@ namespace facet::detail {
     const std::uint32_t* texels = level.texels.data();
     const Int8 t00 = gather8(texels, x0, y0, w), t10 = gather8(texels, x1, y0, w);
     const Int8 t01 = gather8(texels, x0, y1, w), t11 = gather8(texels, x1, y1, w);
-    Int8 packed = Int8{} + static_cast<std::int32_t>(0xFF000000u);
-    for (int shift = 0; shift <= 16; shift += 8) {
+    Float8 rgb[3];
+    for (int c = 0; c < 3; ++c) {
+        const int shift = 8 * c;
         const Float8 c00 = channel8(t00, shift), c10 = channel8(t10, shift);
         const Float8 c01 = channel8(t01, shift), c11 = channel8(t11, shift);
         const Float8 top = c00 + (c10 - c00) * fx;
         const Float8 bottom = c01 + (c11 - c01) * fx;
-        const Float8 c = (top + (bottom - top) * fy) * (1.0f / 255.0f);
-        // toByte(): clamp to [0, 1] (NaN to 0), scale, round half up.
-        const Float8 zero = {}, one = zero + 1.0f;
-        const Float8 clamped = c > 0.0f ? (c < 1.0f ? c : one) : zero;
-        packed |= __builtin_convertvector(clamped * 255.0f + 0.5f, Int8) << shift;
+        rgb[c] = (top + (bottom - top) * fy) * (1.0f / 255.0f);
     }
-    return packed;
+    return packColor8(rgb[0], rgb[1], rgb[2]);
 }
 
 }  // namespace facet::detail
