@@ -7,7 +7,7 @@ BUILD_ASAN ?= build-asan
 CMAKE_ARGS ?=
 OUT        ?= out
 
-.PHONY: all setup build run test test-sanitize bench-kernels doc format clean
+.PHONY: all setup build run test test-sanitize bench-kernels charts doc format clean
 
 all: build
 
@@ -44,6 +44,16 @@ BENCH_ARGS ?= --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 bench-kernels: setup $(BUILD)/build.ninja
 	cmake --build $(BUILD) --target kernels_bench
 	$(BUILD)/tests/kernels_bench $(BENCH_ARGS)
+
+# The speed-against-accuracy charts of issue 6, committed under docs/: `facet accuracy` on the
+# course scenes and Spot (docs/accuracy/), and every stability sweep (docs/sweeps/). About 2 min.
+SHARED ?= ../shared/data
+charts: build
+	$(BUILD)/app/facet accuracy $(SHARED)/course/example0.scene $(SHARED)/course/example1.scene \
+	  $(SHARED)/course/example2.scene $(SHARED)/course/example_textured.scene \
+	  $(SHARED)/scenes/spot_1280x720.scene --texture $(SHARED)/course/brick.jpg \
+	  --csv docs/accuracy/accuracy.csv --chart docs/accuracy/accuracy.png
+	$(BUILD)/app/facet sweeps --out docs/sweeps
 
 doc: setup
 	@command -v doxygen >/dev/null || bash scripts/setup-debian.sh doxygen

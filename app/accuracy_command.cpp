@@ -2,7 +2,6 @@
 // (facet/ground_truth.hpp) and what it costs, measured in the same run: per scene and method,
 // the engine's median time per frame and its error (RMSE, PSNR, max, share over 2 LSB).
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -40,35 +39,6 @@ struct AccuracyOptions {
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
-}
-
-/// The median, min and max of a method's frame times.
-void summarise(std::vector<double> ms, AccuracyResult& r) {
-    std::sort(ms.begin(), ms.end());
-    const std::size_t n = ms.size();
-    r.medianMs = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-    r.minMs = ms.front();
-    r.maxMs = ms.back();
-    r.frames = static_cast<int>(n);
-}
-
-/// Times every method of a scene round-robin: a warm-up frame each, then per round one timed
-/// frame each, so a stretch when another process holds the cores slows every method alike
-/// instead of the one that happened to be measured then. Returns the frame times per method.
-std::vector<std::vector<double>> timeMethods(Renderer& renderer, const Scene& scene,
-                                             const std::vector<AccuracyMethod>& methods,
-                                             const AccuracyOptions& o, Framebuffer& frame) {
-    for (int i = 0; i < o.warmup; ++i)
-        for (const AccuracyMethod& m : methods) renderer.render(scene, m.settings, frame);
-    std::vector<std::vector<double>> ms(methods.size());
-    for (int f = 0; f < o.frames; ++f) {
-        for (std::size_t k = 0; k < methods.size(); ++k) {
-            const auto start = std::chrono::steady_clock::now();
-            renderer.render(scene, methods[k].settings, frame);
-            ms[k].push_back(msSince(start));
-        }
-    }
-    return ms;
 }
 
 int runAccuracy(const AccuracyOptions& o) {
@@ -125,7 +95,7 @@ int runAccuracy(const AccuracyOptions& o) {
                      msSince(start) / 1000.0, o.frames);
         const std::vector<AccuracyMethod> methods = accuracyMethods(scene);
         const std::vector<std::vector<double>> times =
-            timeMethods(renderer, scene, methods, o, frame);
+            timeMethods(renderer, scene, methods, o.frames, o.warmup, frame);
         for (std::size_t j = 0; j < methods.size(); ++j) {
             const AccuracyMethod& m = methods[j];
             AccuracyResult r{name, m.axis, m.name, scene.camera.width, scene.camera.height};

@@ -24,4 +24,7 @@ void addBenchCommand(CLI::App& app, int& exitCode);
 /// `facet accuracy SCENE... [--csv F] [--chart F.png] [--samples N] [--frames N]`.
 void addAccuracyCommand(CLI::App& app, int& exitCode);
 
+/// `facet sweeps [--out DIR] [--only NAME,...] [--quick] [--no-chart]`: the stability sweeps.
+void addSweepsCommand(CLI::App& app, int& exitCode);
+
 }  // namespace facet::app

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     facet::app::addGlRenderCommand(app, exitCode);
     facet::app::addBenchCommand(app, exitCode);
     facet::app::addAccuracyCommand(app, exitCode);
+    facet::app::addSweepsCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {

@@ -83,6 +83,11 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "LP_NUM_THREADS instead)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
+    cmd.add_option("--subpixel-bits", o.subPixelBits,
+                   "Fractional bits of the sub-pixel grid vertices snap to for coverage (CPU "
+                   "engine; the OpenGL twin keeps its own)")
+        ->check(CLI::Range(kMinSubPixelBits, kMaxSubPixelBits))
+        ->capture_default_str();
     cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
 }
 
@@ -111,6 +116,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.nearPlane = o.nearPlane;
     settings.pointSize = o.pointSize;
     settings.threads = o.threads;
+    settings.subPixelBits = o.subPixelBits;
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 

@@ -35,6 +35,7 @@ struct RenderOptions {
     int pointSize = 5;
     int frames = 1;
     int threads = 0;
+    int subPixelBits = kMaxSubPixelBits;
 };
 
 /// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.

@@ -371,14 +371,15 @@ TEST_F(Cli, BenchBadFiltersAreBadInput) {
 }
 
 // facet accuracy on the course's brick wall: one CSV row per method (5 interpolations, 3
-// filters, 2 lightings), `#` header lines, and perspective no worse than affine.
+// filters, 2 lightings, 3 samplings), `#` header lines, perspective no worse than affine and
+// 4×4 supersampling no worse than one sample.
 TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
     const std::string course = std::string(FACET_SHARED_DIR) + "/data/course/";
     if (!fs::exists(course + "brick.jpg")) GTEST_SKIP() << "shared data not available";
     const Outcome r = run("accuracy " + course + "example_textured.scene --texture " + course +
                           "brick.jpg --samples 2 --frames 1 --warmup 0 --csv " + out("a.csv"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find("[10/10] example_textured lighting phong:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("[13/13] example_textured samples 4x4:"), std::string::npos) << r.out;
     std::ifstream csv(out("a.csv"));
     std::string line;
     int comments = 0;
@@ -394,10 +395,10 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
         rows.push_back(cells);
     }
     EXPECT_GE(comments, 3);
-    ASSERT_EQ(rows.size(), 11u);  // header + 10 methods
+    ASSERT_EQ(rows.size(), 14u);  // header + 13 methods
     ASSERT_EQ(rows[0].size(), 14u);
     EXPECT_EQ(rows[0][9], "rmse");
-    double affine = -1.0, perspective = -1.0;
+    double affine = -1.0, perspective = -1.0, one = -1.0, sixteen = -1.0;
     for (std::size_t k = 1; k < rows.size(); ++k) {
         ASSERT_EQ(rows[k].size(), 14u) << k;
         EXPECT_EQ(rows[k][0], "example_textured");
@@ -405,16 +406,73 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
         EXPECT_GT(std::stod(rows[k][6]), 0.0);  // median ms
         if (rows[k][2] == "affine") affine = std::stod(rows[k][9]);
         if (rows[k][2] == "perspective") perspective = std::stod(rows[k][9]);
+        if (rows[k][2] == "1x1") one = std::stod(rows[k][9]);
+        if (rows[k][2] == "4x4") sixteen = std::stod(rows[k][9]);
     }
     ASSERT_GE(affine, 0.0);
     ASSERT_GE(perspective, 0.0);
     EXPECT_LE(perspective, affine);
+    ASSERT_GE(one, 0.0);
+    ASSERT_GE(sixteen, 0.0);
+    EXPECT_LT(sixteen, one);
 }
 
 TEST_F(Cli, AccuracyBadInputIsOneLine) {
     for (const std::string& args :
          {"accuracy " + out("missing.scene"),
           std::string("accuracy ") + FACET_ASSETS_DIR + "/default.scene --samples 0"}) {
+        const Outcome r = run(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.out;
+        EXPECT_EQ(countLines(r.out), 1) << args << "\n" << r.out;
+    }
+}
+
+// facet sweeps in quick mode: one CSV per sweep named, with the `#` notes, the header the chart
+// scripts read and finite cells; with gnuplot, one PNG each.
+TEST_F(Cli, SweepsWriteACsvAndAChartPerSweep) {
+    const bool chart = haveGnuplot();
+    const Outcome r = run("sweeps --quick --frames 1 --samples 2 --only depth,highlights --out " +
+                          out("sweeps") + (chart ? "" : " --no-chart"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("highlights: 18 steps, 18 rows"), std::string::npos) << r.out;
+    for (const auto& [name, header] :
+         {std::pair<std::string, std::string>{"depth",
+                                              "distance,relative_gap,fighting,smallest_resolved"},
+          {"highlights",
+           "rings,shininess,gouraud_peak,phong_peak,ratio,gouraud_rmse,phong_rmse,gouraud_ms,"
+           "phong_ms"}}) {
+        std::ifstream csv(out("sweeps/" + name + ".csv"));
+        ASSERT_TRUE(csv) << name;
+        std::string line;
+        int comments = 0, rows = 0;
+        bool sawHeader = false;
+        while (std::getline(csv, line)) {
+            if (line.rfind("#", 0) == 0) {
+                ++comments;
+            } else if (!sawHeader) {
+                EXPECT_EQ(line, header) << name;
+                sawHeader = true;
+            } else {
+                ++rows;
+                EXPECT_EQ(line.find("nan"), std::string::npos) << name << ": " << line;
+            }
+        }
+        EXPECT_EQ(comments, 3) << name;
+        EXPECT_EQ(rows, name == "depth" ? 3 * 80 : 3 * 6) << name;
+        if (chart) {
+            std::ifstream png(out("sweeps/" + name + ".png"), std::ios::binary);
+            char magic[4] = {};
+            png.read(magic, 4);
+            EXPECT_EQ(std::string(magic + 1, 3), "PNG") << name;
+        }
+    }
+}
+
+TEST_F(Cli, SweepsBadInputIsOneLine) {
+    for (const std::string& args :
+         {std::string("sweeps --only no_such_sweep --no-chart --out ") + out("s1"),
+          std::string("sweeps --no-chart --out /proc/facet_no_such/dir"),
+          std::string("sweeps --samples 0")}) {
         const Outcome r = run(args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.out;
         EXPECT_EQ(countLines(r.out), 1) << args << "\n" << r.out;

@@ -1,5 +1,8 @@
 #include "accuracy_methods.hpp"
 
+#include <algorithm>
+#include <chrono>
+
 namespace facet::app {
 
 RenderSettings baseSettings(const Scene& scene) {
@@ -18,7 +21,14 @@ RenderSettings baseSettings(const Scene& scene) {
 }
 
 std::vector<AccuracyMethod> accuracyMethods(const Scene& scene) {
-    const RenderSettings base = baseSettings(scene);
+    return accuracyMethods(scene, baseSettings(scene));
+}
+
+std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSettings& settings) {
+    RenderSettings base = settings;
+    base.mode = DrawMode::Solid;  // what the ground truth draws
+    base.showNormals = false;
+    base.depthLegend = false;
     std::vector<AccuracyMethod> methods;
     auto add = [&](const char* axis, std::string name, auto change) {
         RenderSettings s = base;
@@ -32,15 +42,55 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene) {
             s.subdivision = n;
         });
     }
-    add("interp", "perspective", [](RenderSettings&) {});
-    if (base.shader == ShaderKind::Texture) {
+    add("interp", "perspective", [](RenderSettings& s) { s.interp = Interp::Perspective; });
+    const bool textured =
+        base.shader == ShaderKind::Texture && scene.texture && !scene.mesh.uvs.empty();
+    if (textured) {
         add("filter", "nearest", [](RenderSettings& s) { s.filter = TextureFilter::Nearest; });
         add("filter", "bilinear", [](RenderSettings& s) { s.filter = TextureFilter::Bilinear; });
-        add("filter", "trilinear", [](RenderSettings&) {});
+        add("filter", "trilinear", [](RenderSettings& s) { s.filter = TextureFilter::Trilinear; });
     }
-    add("lighting", "gouraud", [](RenderSettings& s) { s.lighting = Lighting::Gouraud; });
-    add("lighting", "phong", [](RenderSettings&) {});
+    // The lit colour shows unless the shader ignores it: Depth, or Texture without combine.
+    const bool litShown = base.lighting != Lighting::Off && base.shader != ShaderKind::Depth &&
+                          (base.shader != ShaderKind::Texture || base.combine);
+    if (litShown) {
+        add("lighting", "gouraud", [](RenderSettings& s) { s.lighting = Lighting::Gouraud; });
+        add("lighting", "phong", [](RenderSettings& s) { s.lighting = Lighting::Phong; });
+    }
+    // Coverage: one sample per pixel, or the frame supersampled 2×2 and 4×4 (the engine has no
+    // multisampling; supersampling shades every sample too, so it costs about N² frames).
+    for (const int n : {1, 2, 4}) {
+        add("samples", std::to_string(n) + "x" + std::to_string(n),
+            [n](RenderSettings& s) { s.supersample = n; });
+    }
     return methods;
+}
+
+void summarise(std::vector<double> ms, AccuracyResult& r) {
+    std::sort(ms.begin(), ms.end());
+    const std::size_t n = ms.size();
+    r.medianMs = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+    r.minMs = ms.front();
+    r.maxMs = ms.back();
+    r.frames = static_cast<int>(n);
+}
+
+std::vector<std::vector<double>> timeMethods(Renderer& renderer, const Scene& scene,
+                                             const std::vector<AccuracyMethod>& methods, int frames,
+                                             int warmup, Framebuffer& frame) {
+    for (int i = 0; i < warmup; ++i)
+        for (const AccuracyMethod& m : methods) renderer.render(scene, m.settings, frame);
+    std::vector<std::vector<double>> ms(methods.size());
+    for (int f = 0; f < frames; ++f) {
+        for (std::size_t k = 0; k < methods.size(); ++k) {
+            const auto start = std::chrono::steady_clock::now();
+            renderer.render(scene, methods[k].settings, frame);
+            ms[k].push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
+        }
+    }
+    return ms;
 }
 
 }  // namespace facet::app

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "facet/framebuffer.hpp"
 #include "facet/ground_truth.hpp"
+#include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
@@ -24,8 +26,16 @@ RenderSettings baseSettings(const Scene& scene);
 
 /// The methods for a scene, each the base with one axis changed: interpolation affine,
 /// subdivided 8/16/32, perspective; texture nearest/bilinear/trilinear (textured scenes only);
-/// lighting Gouraud/Phong. All share the base's ground truth (groundTruthSettings()).
+/// lighting Gouraud/Phong; samples per pixel 1x1, 2x2, 4x4 (supersampling). All share the base's
+/// ground truth (groundTruthSettings()).
 std::vector<AccuracyMethod> accuracyMethods(const Scene& scene);
+
+/// The methods around given settings (the viewer's: shader, combine, lighting as the user set
+/// them), made Solid without the normals or the legend, like the ground truth: interpolation
+/// always; texture filters with the Texture shader on a textured scene; Gouraud/Phong when the
+/// settings light and the shader shows it; samples 1x1, 2x2, 4x4 always. accuracyMethods(scene)
+/// is this with baseSettings().
+std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSettings& base);
 
 /// One method measured: the engine's median frame time and its error.
 struct AccuracyResult {
@@ -37,5 +47,15 @@ struct AccuracyResult {
     int frames = 0;
     ImageError error;
 };
+
+/// Fills the median, min, max and count of a method's frame times (ms, at least one).
+void summarise(std::vector<double> ms, AccuracyResult& r);
+
+/// Times every method round-robin: `warmup` untimed frames each, then per round one timed frame
+/// each, so a stretch when another process holds the cores slows every method alike instead of
+/// the one that happened to be measured then. Returns the frame times (ms) per method.
+std::vector<std::vector<double>> timeMethods(Renderer& renderer, const Scene& scene,
+                                             const std::vector<AccuracyMethod>& methods, int frames,
+                                             int warmup, Framebuffer& frame);
 
 }  // namespace facet::app

@@ -21,13 +21,6 @@ std::string fmt(const char* format, double v) {
     return buf;
 }
 
-/// A string as a gnuplot single-quoted literal ('' stands for a quote).
-std::string gpString(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
-    return q + "'";
-}
-
 /// The methods of one scene on its Pareto front, fastest first: walking by time, a method is
 /// kept when it is more accurate than every faster one.
 std::vector<const AccuracyResult*> paretoFront(std::vector<const AccuracyResult*> rows) {
@@ -139,7 +132,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
     const std::string scriptPath = stem + ".gp";
     // One panel per scene: their times and errors differ by orders of magnitude.
     const int n = static_cast<int>(scenes.size());
-    const int cols = n <= 3 ? n : 2;
+    const int cols = std::min(n, 3);
     const int rows = (n + cols - 1) / cols;
     std::string script = "set terminal pngcairo noenhanced size " + std::to_string(700 * cols) +
                          "," + std::to_string(560 * rows + 40) +

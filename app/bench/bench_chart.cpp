@@ -15,9 +15,7 @@ extern char** environ;
 
 namespace facet::app {
 namespace fs = std::filesystem;
-namespace {
 
-/// Where the committed scripts are: the source tree, else scripts/ beside the executable.
 std::string findScript(const std::string& name) {
 #ifdef FACET_SCRIPTS_DIR
     if (fs::exists(fs::path(FACET_SCRIPTS_DIR) / name))
@@ -28,12 +26,13 @@ std::string findScript(const std::string& name) {
     return !ec && fs::exists(beside) ? beside.string() : "";
 }
 
-/// A string as a gnuplot single-quoted literal ('' stands for a quote).
 std::string gpString(const std::string& s) {
     std::string q = "'";
     for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
     return q + "'";
 }
+
+namespace {
 
 /// Runs gnuplot with `args` and waits; an Error when it cannot start or fails.
 Status runGnuplot(const std::string& gnuplot, const std::vector<std::string>& args, bool quiet) {

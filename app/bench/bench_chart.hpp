@@ -20,6 +20,13 @@ struct ChartRequest {
     std::vector<int> threads;
 };
 
+/// Where a committed chart script is: the source tree's scripts/, else scripts/ beside the
+/// executable; empty when neither has it.
+std::string findScript(const std::string& name);
+
+/// A string as a gnuplot single-quoted literal ('' stands for a quote).
+std::string gpString(const std::string& s);
+
 /// Runs gnuplot with `args` (e.g. {"-e", variables, script}) and waits; an Error, saying how to
 /// install it, when it cannot start or fails. Other commands' charts (facet accuracy) use it.
 Status runGnuplotScript(const std::string& gnuplot, const std::vector<std::string>& args);

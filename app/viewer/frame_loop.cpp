@@ -6,6 +6,11 @@
 // The OpenGL twin draws on this thread, which owns the window's context. Side by side, both
 // halves show the same state: the engine's picture of this frame is waited for, and the twin
 // renders meanwhile (pipelined) or after it (serial, so neither time holds the other's work).
+//
+// While the Compare panel's accuracy job runs, the engine renders only when the view, the
+// settings or the Compare state changed (the picture in hand is still right otherwise), and
+// App::run() polls events ten times a second: the job's timings share the cores with as little
+// of the viewer's own work as possible.
 
 #include <epoxy/gl.h>
 
@@ -16,11 +21,24 @@
 
 #include <cstdio>
 
+#include "accuracy_job.hpp"
 #include "panels.hpp"
 #include "screenshot.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {
+namespace {
+
+/// Everything the Compare view's composition depends on.
+bool sameCompare(const CompareView& a, const CompareView& b) {
+    return a.enabled == b.enabled && a.left.interp == b.left.interp &&
+           a.left.subdivision == b.left.subdivision && a.right.interp == b.right.interp &&
+           a.right.subdivision == b.right.subdivision && a.divider == b.divider &&
+           a.display == b.display && a.heatScale == b.heatScale;
+}
+
+}  // namespace
+
 int App::frame(Clock::time_point start, bool last) {
     int status = 0;
     lastTimes = {};
@@ -43,7 +61,14 @@ int App::frame(Clock::time_point start, bool last) {
         ++rendererLog.switches;
         lastChoice = model.rendererChoice;
     }
-    const FramePlan plan = planFrame(model.rendererChoice, compare.enabled);
+    FramePlan plan = planFrame(model.rendererChoice, compare.enabled);
+    const AccuracyView engineView = accuracyView(model.scene, model.sceneVersion, model.settings);
+    // The frame in hand is this one: leave the cores to the job.
+    const bool skipEngine = accuracy.running() && plan.engine && !plan.twin && engineFresh &&
+                            samePicture(engineView, lastEngineView) &&
+                            sameSettings(engineView.settings, lastEngineView.settings) &&
+                            sameCompare(compare, lastEngineCompare);
+    if (skipEngine) plan.engine = false;
     const auto tPanels = Clock::now();
 
     bool inFlight = false;
@@ -51,6 +76,13 @@ int App::frame(Clock::time_point start, bool last) {
     auto submit = [&] {
         worker->submit(model.scene, model.sceneVersion, model.settings, compare);
         inFlight = true;
+        lastEngineView = engineView;
+        lastEngineCompare.enabled = compare.enabled;
+        lastEngineCompare.left = compare.left;
+        lastEngineCompare.right = compare.right;
+        lastEngineCompare.divider = compare.divider;
+        lastEngineCompare.display = compare.display;
+        lastEngineCompare.heatScale = compare.heatScale;
     };
     auto collect = [&] {
         if (!inFlight) return;
@@ -86,7 +118,7 @@ int App::frame(Clock::time_point start, bool last) {
         submit();  // the twin failed (and said why): the engine's picture of this state instead
         collect();
     }
-    engineFresh = plan.engine || (plan.twin && !twinDrew);
+    engineFresh = plan.engine || (plan.twin && !twinDrew) || skipEngine;
     const auto tCompose = Clock::now();
     if (twinDrew && plan.sideBySide) {
         shown = &composeSideBySide(*this);
@@ -129,6 +161,7 @@ int App::frame(Clock::time_point start, bool last) {
     lastTimes.wait = waited;
     lastTimes.total = ms(start, tEnd) - ms(tUi, tShot);  // screenshots are not frame time
     history.push(lastTimes);
+    announceAccuracy(*this);
     return status;
 }
 

@@ -18,8 +18,12 @@ void drawPanels(App& app) {
     // for every panel pixel: about 1 ms per 100k), scrolling beyond the window's height. The
     // Stats window sits at the top right.
     const float maxHeight = std::max(100.0f, ImGui::GetIO().DisplaySize.y - 20.0f);
+    // Wider while the accuracy table shows (it has eight columns); the section says so each
+    // frame it is drawn, so the width follows one frame later.
+    const float width = app.ui.accuracyWide ? 540.0f : 360.0f;
+    app.ui.accuracyWide = false;
     ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(360.0f, 0.0f), ImVec2(360.0f, maxHeight));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, maxHeight));
     if (ImGui::Begin("facet", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::PushItemWidth(-140.0f);  // room for the labels on the right
         if (ImGui::CollapsingHeader("Scene")) scenePanel(app);

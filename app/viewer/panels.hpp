@@ -21,6 +21,8 @@ void cameraPanel(App& app);
 void lightPanel(App& app);
 /// Compare: the two interpolations, split or difference, divider, error numbers.
 void comparePanel(App& app);
+/// Compare's "Against the ground truth": samples, Measure, progress, the methods' table.
+void accuracySection(App& app);
 /// Screenshot: folder, whole window too, save button.
 void screenshotPanel(App& app);
 /// Stats window: fps, frame time split, history plot, what the engine drew.

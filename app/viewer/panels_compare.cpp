@@ -61,14 +61,15 @@ void comparePanel(App& app) {
         ImGui::SliderInt("heat scale", &c.heatScale, 0, 255, c.heatScale ? "%d" : "auto (max)");
     if (!c.enabled && !sideBySide) {
         ImGui::TextDisabled("(drag the divider on the image)");
-        return;
+    } else {
+        const ImageDiff& d = c.diff;
+        const double share = d.pixels ? 100.0 * static_cast<double>(d.pixelsDiffering) /
+                                            static_cast<double>(d.pixels)
+                                      : 0.0;
+        ImGui::Text("mean error %.4f, max error %d (8-bit steps)", d.meanError, d.maxError);
+        ImGui::Text("pixels differing %zu of %zu (%.2f%%)", d.pixelsDiffering, d.pixels, share);
     }
-    const ImageDiff& d = c.diff;
-    const double share =
-        d.pixels ? 100.0 * static_cast<double>(d.pixelsDiffering) / static_cast<double>(d.pixels)
-                 : 0.0;
-    ImGui::Text("mean error %.4f, max error %d (8-bit steps)", d.meanError, d.maxError);
-    ImGui::Text("pixels differing %zu of %zu (%.2f%%)", d.pixelsDiffering, d.pixels, share);
+    accuracySection(app);
 }
 
 void compareOverlay(App& app) {

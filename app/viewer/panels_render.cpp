@@ -3,6 +3,8 @@
 // so on), so a new mode shows up here without touching the viewer. Both renderers read the same
 // settings; where the twin's picture departs from the engine's, the panel says so.
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include "facet/mesh.hpp"
@@ -78,6 +80,14 @@ void renderPanel(App& app) {
                      s.normalLength > 0.0 ? "%.4f" : "auto");
     }
     if (s.mode == DrawMode::Vertices) ImGui::SliderInt("point size", &s.pointSize, 1, 15);
+    if (s.mode == DrawMode::Solid) {
+        // Coverage only: interpolation always uses the unsnapped vertices.
+        int bits = s.subPixelBits;
+        if (ImGui::SliderInt("sub-pixel bits", &bits, kMinSubPixelBits, kMaxSubPixelBits))
+            s.subPixelBits = std::clamp(bits, kMinSubPixelBits, kMaxSubPixelBits);  // Ctrl+click
+        if (s.subPixelBits != kMaxSubPixelBits && app.model.rendererChoice != RendererChoice::Cpu)
+            ImGui::TextDisabled("(the OpenGL twin snaps with its own precision)");
+    }
     float rgb[3];
     rgbFromHex(s.background, rgb);
     if (ImGui::ColorEdit3("background", rgb)) s.background = hexFromRgb(rgb);

@@ -48,6 +48,7 @@ std::string stateText(const ViewerModel& m, long long frames) {
     s << "shader " << toString(m.settings.shader) << "\n";
     s << "interp " << toString(m.settings.interp) << "\n";
     s << "lighting " << toString(m.settings.lighting) << "\n";
+    s << "subpixel_bits " << m.settings.subPixelBits << "\n";
     s << "renderer " << toString(m.rendererChoice) << "\n";
     return s.str();
 }

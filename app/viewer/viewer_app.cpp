@@ -121,6 +121,19 @@ void takeScreenshot(App& app) {
     std::fflush(stdout);
 }
 
+void announceAccuracy(App& app) {
+    const std::uint64_t count = app.accuracy.reportCount();
+    if (count == app.accuracySeen) return;
+    app.accuracySeen = count;
+    const std::shared_ptr<const AccuracyReport> r = app.accuracy.report();
+    if (!r) return;
+    std::printf(
+        "facet-view: accuracy measured, %zu methods at %dx%d, ground truth %dx%d samples "
+        "(%.1f s)\n",
+        r->rows.size(), r->width, r->height, r->samples, r->samples, r->groundTruthSeconds);
+    std::fflush(stdout);
+}
+
 int App::run() {
     std::signal(SIGTERM, onSignal);
     std::signal(SIGINT, onSignal);
@@ -196,7 +209,12 @@ int App::run() {
     vsyncApplied = ui.vsync;
     while (status == 0) {
         const auto start = std::chrono::steady_clock::now();
-        glfwPollEvents();
+        // While the accuracy job measures, ten frames a second are enough for its progress bar
+        // and leave the cores to it (frame_loop.cpp skips unchanged engine frames too).
+        if (accuracy.running())
+            glfwWaitEventsTimeout(0.1);
+        else
+            glfwPollEvents();
         const bool last = glfwWindowShouldClose(window) || keys.quit || gStopSignal ||
                           (options.frames > 0 && frameCount + 1 >= options.frames);
         glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
@@ -212,6 +230,8 @@ int App::run() {
     // own thread, the engine frame collected after the last swap).
     worker->wait(display);
     if (!shown) shown = &display;
+    accuracy.cancel();  // a ground truth in flight stops within milliseconds
+    accuracy.wait();
 
     if (status == 0 && !options.screenshot.empty() && shown) {
         if (Status e = saveFrameShot(*shown, options.screenshot)) {
@@ -220,7 +240,8 @@ int App::run() {
         }
     }
     if (!options.statePath.empty()) {
-        const std::string text = stateText(model, frameCount) + rendererLogText(rendererLog);
+        const std::string text = stateText(model, frameCount) + rendererLogText(rendererLog) +
+                                 accuracyStateText(accuracy.report().get());
         if (Status e = writeTextFile(options.statePath, text)) {
             std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
             status = 1;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "accuracy_job.hpp"
 #include "compare.hpp"
 #include "frame_stats.hpp"
 #include "gl_frame.hpp"
@@ -38,6 +39,9 @@ struct UiState {
     bool vsync = true;
     bool pipelined = true;   ///< the engine renders frame N+1 while N is drawn
     bool showPanels = true;  ///< Tab hides the panels
+    int accuracySamples = kDefaultAccuracySamples;  ///< ground truth samples per axis
+    bool accuracyOpen = false;  ///< the "Against the ground truth" section is open
+    bool accuracyWide = false;  ///< its table shows: the panel widens
 };
 
 /// A mouse drag that belongs to the viewer (it started over the image, not a panel).
@@ -81,6 +85,12 @@ struct App {
     long long frameCount = 0;
     bool screenshotRequested = false;  ///< from the key or the button; taken this frame
     bool vsyncApplied = true;          ///< the swap interval last set
+    AccuracyJob accuracy;              ///< Compare: the methods against the ground truth
+    std::uint64_t accuracySeen = 0;    ///< reports announced on stdout so far
+    /// The view and Compare state (its fields, not its frames) the engine last rendered, so a
+    /// frame can be skipped while the accuracy job measures (see frame_loop.cpp).
+    AccuracyView lastEngineView;
+    CompareView lastEngineCompare;
 
     /// Runs until the window closes, --frames is reached or SIGTERM/SIGINT; returns the exit code.
     int run();
@@ -106,5 +116,8 @@ void takeScreenshot(App& app);
 
 /// Mouse and keys for the camera and the Compare divider; call after ImGui::NewFrame().
 void handleInput(App& app);
+
+/// Announces a newly finished accuracy report on stdout (scripts and tests wait for it).
+void announceAccuracy(App& app);
 
 }  // namespace facet::view

@@ -27,24 +27,25 @@ using NearPolygon = SmallPolygon<ClipVertex, 4>;
 /// A triangle clipped by four guard-band lines has at most seven vertices.
 using ScreenPolygon = SmallPolygon<glm::dvec2, 8>;
 
-/// Where the edge a-b crosses w = near, given the signed distances da = a.w − near and
-/// db = b.w − near of opposite signs. Computed from the inside end whatever the edge's direction,
+/// Where the edge a-b crosses w = near (a and b on opposite sides of it). Computed from the
+/// inside end whatever the edge's direction,
 /// so both triangles sharing the edge (and its wireframe line) get the same vertex.
-inline ClipVertex crossNear(const ClipVertex& a, const ClipVertex& b, float da, float db,
-                            float near) {
-    const bool aInside = da >= 0.0f;
+inline ClipVertex crossNear(const ClipVertex& a, const ClipVertex& b, float near) {
+    const bool aInside = a.pos.w >= near;
     const ClipVertex& in = aInside ? a : b;
     const ClipVertex& out = aInside ? b : a;
-    const float din = aInside ? da : db;
-    const float dout = aInside ? db : da;
-    const float t = din / (din - dout);
-    ClipVertex v{in.pos + t * (out.pos - in.pos), {}};
-    // The new vertex lies on the plane by construction. In float, w = in.w + t·(out.w − in.w)
-    // misses it by in.w's rounding: far vertices (w ~ 1e7) put it on the wrong side of a small
-    // near plane, even below 0, and the whole triangle vanished. x and y carry the same relative
-    // error, which only moves a point that is far outside the image anyway.
+    // In double: the new vertex lands at x/near, y/near in pixels, which for a small near plane
+    // magnifies float rounding of t or x by thousands; in double it stays far below 1/256 px.
+    const double din = static_cast<double>(in.pos.w) - near;
+    const double dout = static_cast<double>(out.pos.w) - near;
+    const double t = din / (din - dout);
+    const glm::dvec4 p = glm::dvec4(in.pos) + t * (glm::dvec4(out.pos) - glm::dvec4(in.pos));
+    ClipVertex v{glm::vec4(p), {}};
+    // The new vertex lies on the plane by construction; rounding w could put it off it, and far
+    // vertices (w ~ 1e7) even below 0, which made whole triangles vanish.
     v.pos.w = near;
-    for (std::size_t k = 0; k < v.a.size(); ++k) v.a[k] = in.a[k] + t * (out.a[k] - in.a[k]);
+    const auto tf = static_cast<float>(t);
+    for (std::size_t k = 0; k < v.a.size(); ++k) v.a[k] = in.a[k] + tf * (out.a[k] - in.a[k]);
     return v;
 }
 
@@ -57,7 +58,7 @@ inline NearPolygon clipNear(const ClipVertex (&tri)[3], float near) {
         const float da = a.pos.w - near;
         const float db = b.pos.w - near;
         if (da >= 0.0f) out.push(a);
-        if ((da >= 0.0f) != (db >= 0.0f)) out.push(crossNear(a, b, da, db, near));
+        if ((da >= 0.0f) != (db >= 0.0f)) out.push(crossNear(a, b, near));
     }
     return out;
 }
@@ -67,7 +68,7 @@ inline bool clipSegmentNear(ClipVertex& a, ClipVertex& b, float near) {
     const float da = a.pos.w - near;
     const float db = b.pos.w - near;
     if (!(da >= 0.0f) && !(db >= 0.0f)) return false;  // also drops NaN ends
-    if (!(da >= 0.0f) || !(db >= 0.0f)) (da >= 0.0f ? b : a) = crossNear(a, b, da, db, near);
+    if (!(da >= 0.0f) || !(db >= 0.0f)) (da >= 0.0f ? b : a) = crossNear(a, b, near);
     return true;
 }
 

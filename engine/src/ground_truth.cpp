@@ -35,15 +35,24 @@ RenderSettings groundTruthSettings(const RenderSettings& settings) {
     return s;
 }
 
-GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings, int samples) {
+GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings, int samples,
+                              const GroundTruthProgress& progress) {
     const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
     Scene big = scene;  // the mesh is copied once; the texture is shared
     big.camera.width = scene.camera.width * n;
     big.camera.height = scene.camera.height * n;
     big.camera.focal = scene.camera.focal * n;
-    const reference::Image image = reference::render(big, groundTruthSettings(settings));
-
+    // The reference render is nearly all of the time; the average after it is the last 1 %.
+    reference::Progress renderProgress;
+    if (progress) renderProgress = [&progress](double f) { return progress(0.99 * f); };
+    const reference::Image image =
+        reference::render(big, groundTruthSettings(settings), renderProgress);
     GroundTruth truth;
+    if (image.cancelled) {
+        truth.cancelled = true;
+        return truth;
+    }
+
     truth.width = scene.camera.width;
     truth.height = scene.camera.height;
     truth.samples = n;
@@ -70,6 +79,7 @@ GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings
             truth.coverage[p] = static_cast<float>(covered * perSample);
         }
     }
+    if (progress) progress(1.0);  // too late to cancel: the truth is whole
     return truth;
 }
 

@@ -16,6 +16,7 @@
 #include "facet/render.hpp"
 #include "fingerprint.hpp"
 #include "primitives.hpp"
+#include "supersample.hpp"
 #include "tile_renderer.hpp"
 
 namespace facet {
@@ -195,6 +196,15 @@ std::size_t vertexBytes(const RenderSettings& s, const Mesh& mesh, const Variant
 
 using Clock = std::chrono::steady_clock;
 
+/// A world point in clip space, computed in double and rounded once: the fast path's clip
+/// coordinates are then the reference's, to float rounding. A float matrix product lost the
+/// camera-space depth to cancellation when the eye was a near distance or two from a surface
+/// far from the world origin (a surface crossed the near plane a pixel off), and its per-vertex
+/// rounding bent tiny silhouette triangles by more than the 1/256 px the rules allow.
+glm::vec4 clipPoint(const glm::dmat4& clipFromWorld, const glm::vec3& p) {
+    return glm::vec4(clipFromWorld * glm::dvec4(glm::dvec3(p), 1.0));
+}
+
 double msSince(Clock::time_point& t) {
     const Clock::time_point now = Clock::now();
     const double ms = std::chrono::duration<double, std::milli>(now - t).count();
@@ -220,13 +230,14 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
                                   input.eye, glm::vec3(1.0f)};
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
     const int threads = resolveThreads(settings.threads);
+    const int subPixelBits = std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
         switch (settings.mode) {
             case DrawMode::Solid: {
                 RasterContext ctx{&frame, &constants, subdivision};
                 tiles_->draw(input, V::kLayout, settings.cullBackFaces, frame.width, frame.height,
-                             &rasterizeTriangle<V>, &ctx, threads, stats);
+                             &rasterizeTriangle<V>, &ctx, threads, subPixelBits, stats);
                 break;
             }
             case DrawMode::Wireframe:
@@ -257,26 +268,43 @@ void Renderer::countCoverage(const DrawInput& input, const RenderSettings& setti
     RenderStats stats;
     CoverageCounts ctx{counts.data(), width};
     tiles_->draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
-                 &ctx, resolveThreads(settings.threads), stats);
+                 &ctx, resolveThreads(settings.threads),
+                 std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits), stats);
 }
 
 RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
                              Framebuffer& frame) {
+    const int n = std::clamp(settings.supersample, 1, detail::kMaxSupersample);
+    if (n == 1 || settings.mode != DrawMode::Solid)
+        return renderView(scene, scene.camera, settings, frame);
+    // The legend is drawn on the final frame, at its size, so it stays legible.
+    RenderSettings big = settings;
+    big.depthLegend = false;
+    RenderStats stats =
+        renderView(scene, detail::supersampledCamera(scene.camera, n), big, supersampled_);
     Clock::time_point t = Clock::now();
-    const Camera& cam = scene.camera;
+    detail::resolveSupersampled(supersampled_, n, frame, resolveThreads(settings.threads));
+    if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
+        drawDepthLegend(frame, stats.depthNear, stats.depthFar);
+    stats.postMs += msSince(t);
+    return stats;
+}
+
+RenderStats Renderer::renderView(const Scene& scene, const Camera& cam,
+                                 const RenderSettings& settings, Framebuffer& frame) {
+    Clock::time_point t = Clock::now();
     frame.resize(cam.width, cam.height);
     const int threads = resolveThreads(settings.threads);
     clearFrame(frame, rgbaFromHex(settings.background), threads);
     const double clearMs = msSince(t);
-    // The transform is built in double and applied in float: one matrix, no per-vertex doubles.
-    const glm::mat4 clipFromWorldF(clipFromWorld(cam));
+    const glm::dmat4 clipFromWorldD = clipFromWorld(cam);
     const Mesh& mesh = scene.mesh;
     const auto& positions = mesh.positions;
     clip_.resize(positions.size());
     const auto vertexCount = static_cast<std::ptrdiff_t>(positions.size());
 #pragma omp parallel for num_threads(threads) if (vertexCount > kParallelVertices)
     for (std::ptrdiff_t i = 0; i < vertexCount; ++i)
-        clip_[i] = clipFromWorldF * glm::vec4(positions[i], 1.0f);
+        clip_[i] = clipPoint(clipFromWorldD, positions[i]);
 
     DrawInput input{.clip = clip_,
                     .colors = mesh.colors,
@@ -320,7 +348,7 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     stats.vertexMs = vertexMs;
     stats.rasterMs = msSince(t);
     stats.vertexBytes = vertexBytes(settings, mesh, variantKey(settings, input));
-    if (settings.showNormals) drawNormals(scene, settings, input.nearPlane, frame, stats);
+    if (settings.showNormals) drawNormals(scene, cam, settings, input.nearPlane, frame, stats);
     // Last, so neither the normals nor the depth colours cover it.
     if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
         drawDepthLegend(frame, stats.depthNear, stats.depthFar);
@@ -328,18 +356,19 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     return stats;
 }
 
-void Renderer::drawNormals(const Scene& scene, const RenderSettings& settings, float nearPlane,
-                           Framebuffer& frame, RenderStats& stats) {
+void Renderer::drawNormals(const Scene& scene, const Camera& camera,
+                           const RenderSettings& settings, float nearPlane, Framebuffer& frame,
+                           RenderStats& stats) {
     const Mesh& mesh = scene.mesh;
     const float length = settings.normalLength > 0.0 ? static_cast<float>(settings.normalLength)
                                                      : normalDisplayLength(mesh);
-    const glm::mat4 clipFromWorldF(clipFromWorld(scene.camera));
+    const glm::dmat4 clipFromWorldD = clipFromWorld(camera);
     normalClip_.clear();
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         if (normals_[i] == glm::vec3(0.0f)) continue;  // no face: no direction to show
         const glm::vec3 p = mesh.positions[i];
-        normalClip_.push_back(clipFromWorldF * glm::vec4(p, 1.0f));
-        normalClip_.push_back(clipFromWorldF * glm::vec4(p + length * normals_[i], 1.0f));
+        normalClip_.push_back(clipPoint(clipFromWorldD, p));
+        normalClip_.push_back(clipPoint(clipFromWorldD, p + length * normals_[i]));
     }
     normalEdges_.resize(normalClip_.size());
     for (std::size_t i = 0; i < normalEdges_.size(); ++i)

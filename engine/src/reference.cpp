@@ -107,6 +107,45 @@ constexpr double kSnap = 1.0 / 256.0;
 // Bresenham arithmetic (2·k·dminor); such segments are not drawn. No sane scene gets near it.
 constexpr double kMaxLineCoord = 536870912.0;  // 2^29
 
+// Progress over a draw's pixel work (the primitives' bounding boxes in the image), reported
+// every 1/kReports of it. Without a callback it does nothing and costs one test per row.
+class Tracker {
+  public:
+    static constexpr double kReports = 200.0;
+
+    Tracker(const Progress& progress, double total)
+        : progress_(progress ? &progress : nullptr),
+          total_(std::max(total, 1.0)),
+          step_(total_ / kReports),
+          next_(step_) {}
+
+    // Counts `work` more done; false once the callback asked to stop.
+    bool add(double work) {
+        if (!progress_ || stopped_) return !stopped_;
+        done_ += work;
+        if (done_ < next_) return true;
+        next_ = done_ + step_;
+        stopped_ = !(*progress_)(std::min(done_ / total_, 1.0));
+        return !stopped_;
+    }
+
+    // The end, reported as 1 (the estimate is not exact) unless stopped.
+    void finish() {
+        if (progress_ && !stopped_) stopped_ = !(*progress_)(1.0);
+    }
+
+    bool active() const { return progress_ != nullptr; }
+    bool stopped() const { return stopped_; }
+
+  private:
+    const Progress* progress_;
+    double total_;
+    double step_;
+    double next_;
+    double done_ = 0.0;
+    bool stopped_ = false;
+};
+
 // A triangle clipped by one plane has at most four vertices.
 struct Polygon {
     std::array<Vertex, 4> v;
@@ -192,8 +231,8 @@ void markEdgeAmbiguity(Image& img, const std::array<glm::dvec2, 3>& s) {
     }
 }
 
-// Rule 4 for one fan triangle in clip space.
-void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v) {
+// Rule 4 for one fan triangle in clip space; each finished row counts towards the progress.
+void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v, Tracker& progress) {
     const RenderSettings& settings = pass.settings;
     std::array<glm::dvec2, 3> s{};
     for (std::size_t i = 0; i < 3; ++i) s[i] = glm::dvec2(v[i].clip) / v[i].clip.w;
@@ -237,7 +276,24 @@ void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v) {
             }
             fragment(img, pass, x, y, depth, v, weights, lod);
         }
+        if (!progress.add(x1 - x0 + 1)) return;
     }
+}
+
+// The pixel work of one triangle for the progress: its bounding box in the image (plus one, for
+// the set-up of triangles off screen), the whole image when the near plane clips it.
+double triangleWork(const Image& img, const std::array<glm::dvec4, 3>& clip, double nearPlane) {
+    std::array<glm::dvec2, 3> s{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (!(clip[i].w >= nearPlane)) return static_cast<double>(img.width) * img.height + 1.0;
+        s[i] = glm::dvec2(clip[i]) / clip[i].w;
+    }
+    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}),
+                                    std::max({s[0].x, s[1].x, s[2].x}), img.width);
+    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}),
+                                    std::max({s[0].y, s[1].y, s[2].y}), img.height);
+    if (x0 > x1 || y0 > y1) return 1.0;
+    return static_cast<double>(x1 - x0 + 1) * (y1 - y0 + 1) + 1.0;
 }
 
 // floor(a / b) for b > 0, rounding towards -inf unlike C++'s truncating division.
@@ -387,7 +443,8 @@ std::vector<glm::dvec4> projectScene(const Scene& scene) {
     return clip;
 }
 
-Image draw(const Input& input, const RenderSettings& settings, int width, int height) {
+Image draw(const Input& input, const RenderSettings& settings, int width, int height,
+           const Progress& progress) {
     Image img;
     img.width = std::max(width, 0);
     img.height = std::max(height, 0);
@@ -413,9 +470,24 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
     auto valid = [&](std::uint32_t i) { return i < vertexCount; };
 
     const Pass pass{settings, input, false};
+    // The progress counts triangles by their pixels, lines and points one each.
+    double work = 0.0;
+    if (progress) {
+        if (settings.mode != DrawMode::Solid) work = static_cast<double>(input.indices.size());
+        for (std::size_t t = 0; settings.mode == DrawMode::Solid && t + 2 < input.indices.size();
+             t += 3) {
+            const std::uint32_t i0 = input.indices[t];
+            const std::uint32_t i1 = input.indices[t + 1];
+            const std::uint32_t i2 = input.indices[t + 2];
+            if (!valid(i0) || !valid(i1) || !valid(i2)) continue;
+            work += triangleWork(img, {input.clip[i0], input.clip[i1], input.clip[i2]},
+                                 input.nearPlane);
+        }
+    }
+    Tracker tracker(progress, work);
     switch (settings.mode) {
         case DrawMode::Solid:
-            for (std::size_t t = 0; t + 2 < input.indices.size(); t += 3) {
+            for (std::size_t t = 0; t + 2 < input.indices.size() && !tracker.stopped(); t += 3) {
                 const std::uint32_t i0 = input.indices[t];
                 const std::uint32_t i1 = input.indices[t + 1];
                 const std::uint32_t i2 = input.indices[t + 2];
@@ -423,8 +495,9 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
                 const Polygon poly =
                     clipNear({vertex(i0), vertex(i1), vertex(i2)}, input.nearPlane);
                 for (std::size_t k = 1; k + 1 < poly.count; ++k) {
-                    rasterizeTriangle(img, pass, {poly.v[0], poly.v[k], poly.v[k + 1]});
+                    rasterizeTriangle(img, pass, {poly.v[0], poly.v[k], poly.v[k + 1]}, tracker);
                 }
+                tracker.add(1.0);
             }
             break;
         case DrawMode::Wireframe: {
@@ -441,6 +514,7 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
             std::sort(edges.begin(), edges.end());
             edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
             for (const auto& [a, b] : edges) {
+                if (!tracker.add(2.0)) break;  // each edge is in about two triangles
                 if (!valid(a) || !valid(b)) continue;
                 drawSegment(img, pass, vertex(a), vertex(b), input.nearPlane);
             }
@@ -448,9 +522,17 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
         }
         case DrawMode::Vertices:
             for (std::uint32_t i = 0; i < vertexCount; ++i) {
+                if (!tracker.add(static_cast<double>(input.indices.size()) /
+                                 std::max<double>(1.0, static_cast<double>(vertexCount))))
+                    break;
                 drawPoint(img, pass, vertex(i), input.nearPlane);
             }
             break;
+    }
+    if (tracker.active()) tracker.finish();
+    if (tracker.stopped()) {
+        img.cancelled = true;
+        return img;
     }
 
     if (settings.shader == ShaderKind::Depth) mapDepthToColor(img);

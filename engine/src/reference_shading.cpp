@@ -298,7 +298,7 @@ std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings&
     return ends;
 }
 
-Image render(const Scene& scene, const RenderSettings& settings) {
+Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
     const Mesh& mesh = scene.mesh;
     const std::size_t n = mesh.positions.size();
     const std::vector<glm::dvec4> clip = projectScene(scene);
@@ -336,7 +336,7 @@ Image render(const Scene& scene, const RenderSettings& settings) {
     input.texture = scene.texture.get();
     input.lighting = params;
     input.eye = scene.camera.eye;
-    return draw(input, settings, scene.camera.width, scene.camera.height);
+    return draw(input, settings, scene.camera.width, scene.camera.height, progress);
 }
 
 }  // namespace facet::reference

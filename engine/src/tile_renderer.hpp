@@ -26,10 +26,11 @@ int resolveThreads(int requested);
 class TileRenderer {
   public:
     /// Draws triangles like drawTriangles() over the whole draw, rasterizing with `rasterize`
-    /// (whose `context` must be safe to share between threads for disjoint tiles). Adds the
-    /// front end's counters and the fragments to `stats`.
+    /// (whose `context` must be safe to share between threads for disjoint tiles), on a grid of
+    /// 1/2^subPixelBits px. Adds the front end's counters and the fragments to `stats`.
     void draw(const DrawInput& in, const VaryingLayout& layout, bool cull, int width, int height,
-              RasterizeFn rasterize, void* context, int threads, RenderStats& stats);
+              RasterizeFn rasterize, void* context, int threads, int subPixelBits,
+              RenderStats& stats);
 
   private:
     /// A triangle (or guard-band part) ready to rasterize.

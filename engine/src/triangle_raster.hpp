@@ -4,6 +4,11 @@
 // Vertices are snapped to 1/256 px. Edge functions are then exact 64-bit integers, so the
 // top-left rule is decided without rounding: two triangles sharing an edge see the same integers
 // with opposite signs, and every pixel centre on the edge goes to exactly one of them.
+//
+// A coarser grid (RenderSettings::subPixelBits < 8) only changes the snap: a vertex is rounded to
+// 1/2^b px and then written in 1/256 px units, which is exact. Coverage is then exactly a b-bit
+// rasterizer's while the edge arithmetic below stays the same, so the choice costs nothing per
+// pixel.
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +46,21 @@ enum class Facing { Degenerate, Front, Back };
 inline std::int64_t snap(double v) {
     return std::llround(v * static_cast<double>(kSubPixel));
 }
+
+/// Snapping to a grid of 1/2^bits px, results in 1/256 px units: v·2^bits is exact in double, so
+/// the rounding is the b-bit rasterizer's, and the product with `step` is exact in integers.
+struct SnapGrid {
+    double scale = static_cast<double>(kSubPixel);  ///< 2^bits
+    std::int64_t step = 1;                          ///< 2^(kSubPixelBits − bits)
+
+    /// The grid of `bits` fractional bits, clamped to 1…kSubPixelBits.
+    static SnapGrid ofBits(int bits) {
+        const int b = std::clamp(bits, 1, kSubPixelBits);
+        return {static_cast<double>(std::int64_t{1} << b), std::int64_t{1} << (kSubPixelBits - b)};
+    }
+    /// `v` snapped to this grid, in 1/256 px units; snap(v) at 8 bits.
+    std::int64_t operator()(double v) const { return std::llround(v * scale) * step; }
+};
 
 /// Floor division by the grid size (arithmetic shift rounds toward -inf in C++20).
 inline std::int64_t floorDivSub(std::int64_t v) {

@@ -1,6 +1,6 @@
 // The triangle front end (see triangle_setup.hpp). Screen positions and planes are computed in
 // double from the unsnapped vertices, so interpolation does not inherit the snapping error; only
-// coverage uses the 1/256 px grid.
+// coverage uses the sub-pixel grid (1/256 px, or coarser with RenderSettings::subPixelBits).
 
 #include "triangle_setup.hpp"
 
@@ -61,7 +61,8 @@ bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int count, i
 
 std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
                           int height, std::size_t first, std::size_t end, RasterizeFn emit,
-                          void* context, RenderStats& stats) {
+                          void* context, RenderStats& stats, int subPixelBits) {
+    const SnapGrid grid = SnapGrid::ofBits(subPixelBits);
     const PixelRect screen{0, 0, width - 1, height - 1};
     const glm::dvec2 guardLo(-kGuardBand, -kGuardBand);
     const glm::dvec2 guardHi(width + kGuardBand, height + kGuardBand);
@@ -118,8 +119,8 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
             const int baseY = static_cast<int>(std::clamp(std::floor(minY), 0.0, H - 1.0));
 
             if (inGuard) {
-                const std::int64_t xs[3] = {snap(s[0].x), snap(s[1].x), snap(s[2].x)};
-                const std::int64_t ys[3] = {snap(s[0].y), snap(s[1].y), snap(s[2].y)};
+                const std::int64_t xs[3] = {grid(s[0].x), grid(s[1].x), grid(s[2].x)};
+                const std::int64_t ys[3] = {grid(s[0].y), grid(s[1].y), grid(s[2].y)};
                 CoverageSetup setup;
                 const Facing facing = setupCoverage(xs, ys, screen, setup);
                 if (facing == Facing::Degenerate) continue;
@@ -142,10 +143,10 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
             }
             const ScreenPolygon cover = clipToRect(s, guardLo, guardHi);
             for (std::size_t j = 1; j + 1 < cover.size; ++j) {
-                const std::int64_t xs[3] = {snap(cover.v[0].x), snap(cover.v[j].x),
-                                            snap(cover.v[j + 1].x)};
-                const std::int64_t ys[3] = {snap(cover.v[0].y), snap(cover.v[j].y),
-                                            snap(cover.v[j + 1].y)};
+                const std::int64_t xs[3] = {grid(cover.v[0].x), grid(cover.v[j].x),
+                                            grid(cover.v[j + 1].x)};
+                const std::int64_t ys[3] = {grid(cover.v[0].y), grid(cover.v[j].y),
+                                            grid(cover.v[j + 1].y)};
                 CoverageSetup setup;
                 if (setupCoverage(xs, ys, screen, setup) == Facing::Degenerate) continue;
                 drawn = true;

@@ -36,9 +36,9 @@ using RasterizeFn = std::size_t (*)(void* context, const CoverageSetup& setup,
 
 /// Runs the front end over triangles [first, end) of the draw and calls `emit` for each part
 /// that covers pixels, with the planes of the (whole, unclipped by the guard band) triangle.
-/// Returns the sum of what `emit` returned.
+/// Returns the sum of what `emit` returned. Coverage uses a grid of 1/2^subPixelBits px.
 std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
                           int height, std::size_t first, std::size_t end, RasterizeFn emit,
-                          void* context, RenderStats& stats);
+                          void* context, RenderStats& stats, int subPixelBits = kSubPixelBits);
 
 }  // namespace facet::detail

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -29,7 +30,12 @@ struct GroundTruth {
     int samples = 0;               ///< per axis: each pixel averages samples² sub-samples
     std::vector<glm::vec3> color;  ///< RGB in [0,1] (each sub-sample clamped), row 0 at the top
     std::vector<float> coverage;   ///< share of the pixel's sub-samples some triangle drew, k/N²
+    bool cancelled = false;        ///< the progress callback stopped it: empty, width 0
 };
+
+/// Told how far a ground truth got (0…1), from the thread rendering it, every half percent or
+/// so; returning false cancels it. The same type as reference::Progress.
+using GroundTruthProgress = std::function<bool(double fraction)>;
 
 /// The settings the ground truth is rendered with: Solid, perspective-correct interpolation,
 /// Phong in place of Gouraud, bilinear on level 0 in place of any texture filter; the rest
@@ -37,9 +43,11 @@ struct GroundTruth {
 RenderSettings groundTruthSettings(const RenderSettings& settings);
 
 /// Renders the scene with groundTruthSettings() at samples×samples sub-samples per pixel, box
-/// filtered. `samples` is clamped to 1…kMaxGroundTruthSamples.
+/// filtered. `samples` is clamped to 1…kMaxGroundTruthSamples. With `progress`, a render it
+/// cancels returns an empty GroundTruth with `cancelled` set.
 GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings,
-                              int samples = kDefaultGroundTruthSamples);
+                              int samples = kDefaultGroundTruthSamples,
+                              const GroundTruthProgress& progress = {});
 
 /// How far an 8-bit image is from a ground truth, in 8-bit steps (1 LSB = 1/255).
 struct ImageError {

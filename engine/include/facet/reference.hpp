@@ -4,6 +4,7 @@
 // path is tested against and the executable specification of what a correct image is.
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -17,6 +18,11 @@
 
 namespace facet::reference {
 
+/// Told how far a render got (0…1), from the rendering thread, every half percent or so of the
+/// pixel work; returning false stops the render (Image::cancelled). Slow renders (a ground
+/// truth at 8×8 the size) use it for a progress bar and a Cancel button.
+using Progress = std::function<bool(double fraction)>;
+
 /// A rendered image in double precision, plus where a correct fast path may differ from it.
 struct Image {
     int width = 0;
@@ -28,6 +34,7 @@ struct Image {
     /// 1/256 px of a pixel border, or a Nearest texel lookup within 1/256 texel of a texel
     /// border. Elsewhere a correct fast path must agree exactly.
     std::vector<std::uint8_t> ambiguous;
+    bool cancelled = false;  ///< the Progress callback stopped it: the picture is incomplete
 
     /// 8-bit RGBA with the conventions' rounding (clamp, round to nearest), packed like
     /// Framebuffer::color.
@@ -65,9 +72,10 @@ std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings&
 
 /// Renders the scene at the camera's size with the given settings: builds every Input stream
 /// from the scene (Gouraud colours lit per vertex, normals, uvs, the normals display).
-Image render(const Scene& scene, const RenderSettings& settings);
+Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress = {});
 
 /// Draws clip-space geometry onto a background-filled image of the given size.
-Image draw(const Input& input, const RenderSettings& settings, int width, int height);
+Image draw(const Input& input, const RenderSettings& settings, int width, int height,
+           const Progress& progress = {});
 
 }  // namespace facet::reference

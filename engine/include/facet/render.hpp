@@ -88,9 +88,13 @@ class Renderer {
                        int height, std::vector<std::uint16_t>& counts);
 
   private:
+    /// render() for one camera: the scene's, or the supersampled image's.
+    RenderStats renderView(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                           Framebuffer& frame);
+
     /// The normals display: a red segment per vertex normal, after the main pass.
-    void drawNormals(const Scene& scene, const RenderSettings& settings, float nearPlane,
-                     Framebuffer& frame, RenderStats& stats);
+    void drawNormals(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                     float nearPlane, Framebuffer& frame, RenderStats& stats);
 
     std::vector<glm::vec4> clip_;
     std::vector<glm::vec3> litColors_;
@@ -106,6 +110,7 @@ class Renderer {
     std::uint64_t edgesFingerprint_ = 0;
     std::vector<std::uint32_t> normalEdges_;
     std::unique_ptr<detail::TileRenderer> tiles_;  // bins kept between frames
+    Framebuffer supersampled_;                     // the N×N-size image of a supersampled frame
 };
 
 }  // namespace facet

@@ -34,6 +34,11 @@ enum class TextureFilter { Nearest, Bilinear, Trilinear };
 inline constexpr int kMinSubdivision = 2;
 inline constexpr int kMaxSubdivision = 256;
 
+/// Fewest and most fractional bits of the sub-pixel grid vertices are snapped to (conventions
+/// §5); the engine clamps RenderSettings::subPixelBits to this range.
+inline constexpr int kMinSubPixelBits = 2;
+inline constexpr int kMaxSubPixelBits = 8;
+
 /// Everything that selects a pipeline variant or changes a draw.
 struct RenderSettings {
     DrawMode mode = DrawMode::Solid;
@@ -51,6 +56,10 @@ struct RenderSettings {
     int pointSize = 5;                    ///< side of the vertex squares, in pixels
     double nearPlane = 0.0;               ///< camera-space near distance; <= 0 means auto
     int threads = 0;                      ///< engine worker threads; <= 0 means all cores
+    int subPixelBits = 8;  ///< fractional bits of the coverage grid (2…8, clamped); 8 = 1/256 px
+    /// Samples per pixel axis, 1…4 (clamped): the frame is rendered at N×N the size and each
+    /// N×N block averaged (supersampling); Solid mode only, lines and points stay one sample.
+    int supersample = 1;
 };
 
 /// Parses names as the CLI spells them ("solid", "painter", "affine"...); nullopt if unknown.

@@ -1,0 +1,56 @@
+#include "sweep_table.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace facet::app {
+
+void SweepTable::add(std::vector<std::string> cells) {
+    assert(cells.size() == columns.size());
+    rows.push_back(std::move(cells));
+}
+
+double medianRenderMs(Renderer& renderer, const Scene& scene, const RenderSettings& settings,
+                      int frames, Framebuffer& frame) {
+    renderer.render(scene, settings, frame);  // warm-up: scratch buffers, caches, mip chain
+    std::vector<double> ms;
+    for (int f = 0; f < std::max(1, frames); ++f) {
+        const auto t0 = std::chrono::steady_clock::now();
+        renderer.render(scene, settings, frame);
+        ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
+std::string cell(double v) {
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
+}
+
+Status writeSweepCsv(const std::string& path, const SweepTable& table,
+                     const std::vector<std::string>& notes) {
+    std::ofstream out(path);
+    if (!out) return Error{{path, 0}, "cannot write the sweep's CSV"};
+    for (const std::string& n : notes) out << "# " << n << '\n';
+    auto line = [&out](const std::vector<std::string>& cells) {
+        for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];
+        out << '\n';
+    };
+    line(table.columns);
+    for (const auto& row : table.rows) line(row);
+    out.flush();
+    if (!out) return Error{{path, 0}, "writing the sweep's CSV failed"};
+    return std::nullopt;
+}
+
+}  // namespace facet::app

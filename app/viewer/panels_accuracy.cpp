@@ -1,0 +1,124 @@
+// The Compare panel's "Against the ground truth" section: the samples, Measure (or a progress
+// bar and Cancel while the job runs), then each method's median time and error in the view it
+// was measured for, the Pareto front marked, and a note when the view has changed since.
+// Clicking a row switches the viewer to that method.
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "accuracy_job.hpp"
+#include "panels.hpp"
+#include "viewer_app.hpp"
+
+namespace facet::view {
+namespace {
+
+const ImVec4 kGreen(0.45f, 0.85f, 0.45f, 1.0f);
+const ImVec4 kYellow(0.95f, 0.8f, 0.3f, 1.0f);
+
+void cell(const char* format, double value) {
+    ImGui::TableNextColumn();
+    if (std::isinf(value))
+        ImGui::TextUnformatted("inf");
+    else
+        ImGui::Text(format, value);
+}
+
+/// The measured methods, one row each; returns the row clicked, or -1.
+int methodTable(const AccuracyReport& report, const RenderSettings& current) {
+    int clicked = -1;
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("accuracy", 8, flags)) return clicked;
+    for (const char* name : {"", "axis", "method", "ms", "RMSE", "PSNR", "max", ">2 LSB"})
+        ImGui::TableSetupColumn(name);
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < report.rows.size(); ++i) {
+        const AccuracyRow& r = report.rows[i];
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::PushID(static_cast<int>(i));
+        // The row the viewer draws now is highlighted; the Pareto front is starred.
+        if (r.pareto) ImGui::PushStyleColor(ImGuiCol_Text, kGreen);
+        if (ImGui::Selectable(r.pareto ? "*" : " ", sameMethod(r.settings, current),
+                              ImGuiSelectableFlags_SpanAllColumns))
+            clicked = static_cast<int>(i);
+        if (r.pareto) ImGui::PopStyleColor();
+        ImGui::PopID();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(r.axis.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(r.method.c_str());
+        cell("%.2f", r.medianMs);
+        cell("%.3f", r.error.rmse);
+        cell("%.1f", r.error.psnr);
+        cell("%.0f", r.error.maxError);
+        cell("%.2f %%", 100.0 * r.error.over2Lsb);
+    }
+    ImGui::EndTable();
+    return clicked;
+}
+
+}  // namespace
+
+void accuracySection(App& app) {
+    app.ui.accuracyOpen =
+        ImGui::TreeNodeEx("Against the ground truth", ImGuiTreeNodeFlags_DefaultOpen);
+    if (!app.ui.accuracyOpen) return;
+    AccuracyJob& job = app.accuracy;
+    // Sub-samples per pixel, n×n: the reference path's time and memory grow with n².
+    char current[32];
+    std::snprintf(current, sizeof current, "%d x %d per pixel", app.ui.accuracySamples,
+                  app.ui.accuracySamples);
+    if (ImGui::BeginCombo("samples", current)) {
+        for (int n = 1; n <= kMaxAccuracySamples; ++n) {
+            char item[32];
+            std::snprintf(item, sizeof item, "%d x %d", n, n);
+            if (ImGui::Selectable(item, n == app.ui.accuracySamples)) app.ui.accuracySamples = n;
+        }
+        ImGui::EndCombo();
+    }
+    const AccuracyStatus status = job.status();
+    if (job.running()) {
+        ImGui::ProgressBar(static_cast<float>(status.fraction), ImVec2(-80.0f, 0.0f),
+                           status.label.c_str());
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) job.cancel();
+    } else {
+        if (ImGui::Button("Measure"))
+            job.start(app.model.scene, app.model.sceneVersion, app.model.settings,
+                      app.ui.accuracySamples);
+        ImGui::SameLine();
+        ImGui::TextDisabled("time and error per method");
+        if (!status.message.empty()) {
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextColored(kYellow, "%s", status.message.c_str());
+            ImGui::PopTextWrapPos();
+        }
+    }
+
+    const std::shared_ptr<const AccuracyReport> report = job.report();
+    app.ui.accuracyWide = report != nullptr;
+    if (report) {
+        ImGui::Text("%dx%d, truth %dx%d samples (%.1f s), median of %d", report->width,
+                    report->height, report->samples, report->samples, report->groundTruthSeconds,
+                    report->frames);
+        const AccuracyView now =
+            accuracyView(app.model.scene, app.model.sceneVersion, app.model.settings);
+        if (!reportFresh(*report, now))
+            ImGui::TextColored(kYellow, "stale: the view or settings changed since");
+        if (now.settings.mode != DrawMode::Solid)
+            ImGui::TextDisabled("(drawn solid for this, like the ground truth)");
+        const int clicked = methodTable(*report, now.settings);
+        if (clicked >= 0)
+            applyMethod(report->rows[static_cast<std::size_t>(clicked)], app.model.settings);
+        ImGui::TextDisabled(
+            "RMSE, max: 8-bit steps. * Pareto front: no other\n"
+            "method both faster and more accurate. Click: use it.");
+    }
+    ImGui::TreePop();
+}
+
+}  // namespace facet::view

@@ -1,0 +1,97 @@
+// The Compare panel's "Against the ground truth" as a user meets it: a real facet-view window in
+// a virtual X display, Measure clicked with xdotool, the viewer's announcement of the finished
+// measurement waited for, a row of the table clicked, and the --state file and the window read
+// back. Like viewer_gui_test, one Xvfb at a time (RESOURCE_LOCK in CMakeLists.txt).
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "facet/framebuffer.hpp"
+#include "viewer_gui_support.hpp"
+
+namespace {
+
+using namespace facet;
+using namespace viewer_gui;
+
+// Starts the viewer in the Compare panel (so the layout is fixed: Measure at (67, 374) of the
+// window), clicks Measure, waits up to 40 s for "accuracy measured" on its stdout, clicks the
+// table's fourth row (subdivided:16), then closes it with Escape.
+const char* const kScript = R"(set -u
+cd "$1" || exit 1
+shift
+"$@" --state state.txt --screenshot frame.png --window-shot window.png >viewer.log 2>&1 &
+pid=$!
+wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^facet-view' 2>/dev/null | head -n 1)
+if [ -z "$wid" ]; then
+  echo "no facet-view window appeared" >&2
+  kill -TERM "$pid" 2>/dev/null
+  wait "$pid"
+  exit 1
+fi
+sleep 1
+xdotool mousemove --window "$wid" 67 374 click 1
+i=0
+while ! grep -q "accuracy measured" viewer.log && [ "$i" -lt 400 ]; do sleep 0.1; i=$((i + 1)); done
+sleep 0.5
+xdotool mousemove --window "$wid" 150 464 click 1
+sleep 0.5
+xdotool mousemove --window "$wid" 900 450 key Escape
+i=0
+while kill -0 "$pid" 2>/dev/null && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+kill -0 "$pid" 2>/dev/null && kill -TERM "$pid"
+wait "$pid"
+status=$?
+cat viewer.log
+exit "$status"
+)";
+
+TEST_F(ViewerGui, MeasuringAgainstTheGroundTruthFillsTheTableAndARowPicksTheMethod) {
+    REQUIRE_XDOTOOL();
+    {
+        std::ofstream script(path("measure.sh"));
+        script << kScript;
+    }
+    const Outcome r = run("timeout 90 " + kXvfb + "sh " + path("measure.sh") + " " + dir.string() +
+                          " " + kViewer + " --compare --size 1280x720 --no-vsync --lighting phong");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("accuracy measured, 7 methods at 1280x720, ground truth 4x4 samples"),
+              std::string::npos)
+        << r.out;
+
+    // Painter with Phong on the default knot: five interpolations and two lightings, measured
+    // for the window's frame; perspective and Phong are the exact forms, so never worse than
+    // subdivided or Gouraud.
+    const auto state = readState(path("state.txt"));
+    ASSERT_EQ(state.count("accuracy_rows"), 1u);
+    EXPECT_EQ(state.at("accuracy_rows"), "10");
+    EXPECT_EQ(state.at("accuracy_samples"), "4");
+    EXPECT_EQ(state.at("accuracy_size"), "1280 720");
+    auto rmse = [&](const std::string& key) {  // "ms rmse psnr max over2 pareto"
+        std::istringstream in(state.at(key));
+        double ms = 0.0, value = 0.0;
+        in >> ms >> value;
+        EXPECT_GT(ms, 0.0) << key;
+        return value;
+    };
+    EXPECT_LE(rmse("accuracy_interp_perspective"), rmse("accuracy_interp_subdivided:32"));
+    EXPECT_LE(rmse("accuracy_lighting_phong"), rmse("accuracy_lighting_gouraud"));
+    EXPECT_GT(rmse("accuracy_interp_perspective"), 0.0);
+
+    // The click on the subdivided:16 row switched the viewer to it.
+    EXPECT_EQ(state.at("interp"), "subdivided");
+    EXPECT_EQ(state.at("lighting"), "phong");
+
+    // The panel widened to hold the table: right of its usual 360 pixels, the table's rows
+    // cover the frame.
+    const Framebuffer window = readPng(path("window.png"));
+    const Framebuffer frame = readPng(path("frame.png"));
+    ASSERT_EQ(window.width, 1280);
+    ASSERT_EQ(frame.width, 1280);
+    EXPECT_GT(differingShare(window, frame, 375, 420, 515, 540), 0.5);
+}
+
+}  // namespace
