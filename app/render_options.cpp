@@ -88,6 +88,11 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "engine; the OpenGL twin keeps its own)")
         ->check(CLI::Range(kMinSubPixelBits, kMaxSubPixelBits))
         ->capture_default_str();
+    cmd.add_option("--supersample", o.supersample,
+                   "Samples per pixel axis: render N×N times the pixels and average them "
+                   "(anti-aliasing; solid mode; CPU engine)")
+        ->check(CLI::Range(1, 4))
+        ->capture_default_str();
     cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
 }
 
@@ -117,6 +122,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.pointSize = o.pointSize;
     settings.threads = o.threads;
     settings.subPixelBits = o.subPixelBits;
+    settings.supersample = o.supersample;
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 

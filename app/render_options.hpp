@@ -36,6 +36,7 @@ struct RenderOptions {
     int frames = 1;
     int threads = 0;
     int subPixelBits = kMaxSubPixelBits;
+    int supersample = 1;  ///< samples per pixel axis (supersampling), 1…4
 };
 
 /// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.

@@ -18,6 +18,7 @@
 #include "accuracy/sweep_depth.hpp"
 #include "accuracy/sweep_extreme.hpp"
 #include "accuracy/sweep_highlights.hpp"
+#include "accuracy/sweep_subpixel.hpp"
 #include "accuracy/sweep_table.hpp"
 #include "accuracy/sweep_view_angle.hpp"
 #include "bench/bench_chart.hpp"
@@ -40,6 +41,7 @@ std::vector<Sweep> allSweeps() {
         {"view_angle", [](const SweepOptions& o) { return viewAngleTable(sweepViewAngle(o)); }},
         {"highlights", [](const SweepOptions& o) { return highlightsTable(sweepHighlights(o)); }},
         {"depth", [](const SweepOptions& o) { return depthTable(sweepDepth(o)); }},
+        {"subpixel", [](const SweepOptions& o) { return subPixelTable(sweepSubPixel(o)); }},
         {"extreme", [](const SweepOptions& o) { return extremeTable(sweepExtreme(o)); }},
         {"camera_paths",
          [](const SweepOptions& o) { return cameraTable(sweepCameraPaths(o)); }},

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <random>
@@ -318,20 +317,6 @@ TEST(SubPixelSweep, TableHasOneRowPerPoint) {
     EXPECT_EQ(t.name, "subpixel");
     EXPECT_EQ(t.rows.size(), quickSweep().size());
     for (const auto& row : t.rows) EXPECT_EQ(row.size(), t.columns.size());
-}
-
-// Not a test: the full sweep with the shared scenes as CSV, until `facet sweeps` writes it.
-// FACET_SUBPIXEL_CSV=out.csv subpixel_test --gtest_also_run_disabled_tests
-//   --gtest_filter='*DISABLED_WriteFullSweep*'
-TEST(SubPixelSweep, DISABLED_WriteFullSweep) {
-    const char* path = std::getenv("FACET_SUBPIXEL_CSV");
-    if (!path) GTEST_SKIP() << "set FACET_SUBPIXEL_CSV";
-    app::SweepOptions o;
-    o.shared = FACET_SHARED_DIR;
-    o.frames = 7;
-    const std::vector<app::SubPixelPoint> points = app::sweepSubPixel(o);
-    const app::SweepTable t = app::subPixelTable(points);
-    ASSERT_FALSE(app::writeSweepCsv(path, t, {t.title}).has_value());
 }
 
 }  // namespace

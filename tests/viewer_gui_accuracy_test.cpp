@@ -58,7 +58,7 @@ TEST_F(ViewerGui, MeasuringAgainstTheGroundTruthFillsTheTableAndARowPicksTheMeth
     const Outcome r = run("timeout 90 " + kXvfb + "sh " + path("measure.sh") + " " + dir.string() +
                           " " + kViewer + " --compare --size 1280x720 --no-vsync --lighting phong");
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find("accuracy measured, 7 methods at 1280x720, ground truth 4x4 samples"),
+    EXPECT_NE(r.out.find("accuracy measured, 10 methods at 1280x720, ground truth 4x4 samples"),
               std::string::npos)
         << r.out;
 

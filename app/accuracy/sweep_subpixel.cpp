@@ -200,14 +200,15 @@ void sweepScene(const std::string& name, const Scene& scene, const SweepOptions&
     for (const double d : exact.depth) covered += std::isfinite(d) ? 1 : 0;
 
     const RenderSettings base = baseSettings(scene);
-    const GroundTruth truth = renderGroundTruth(scene, base, options.quick ? 4 : 8);
+    const GroundTruth truth = renderGroundTruth(scene, base, options.samples);
 
-    // The crack check's input: the engine's clip positions and the open boundary.
-    const glm::mat4 clipFromWorldF(clipFromWorld(cam));
+    // The crack check's input: the engine's clip positions (in double, rounded once, as
+    // Renderer::render computes them) and the open boundary.
+    const glm::dmat4 clipFromWorldD = clipFromWorld(cam);
     std::vector<glm::vec4> clip;
     clip.reserve(scene.mesh.positions.size());
     for (const glm::vec3& p : scene.mesh.positions)
-        clip.push_back(clipFromWorldF * glm::vec4(p, 1.0f));
+        clip.push_back(glm::vec4(clipFromWorldD * glm::dvec4(glm::dvec3(p), 1.0)));
     const auto open = openEdges(scene.mesh);
 
     Renderer renderer;
@@ -215,6 +216,7 @@ void sweepScene(const std::string& name, const Scene& scene, const SweepOptions&
     const Counts finest = countLayers(renderer, scene, clip, kMaxSubPixelBits);
     std::vector<AccuracyMethod> methods;
     for (const int bits : bitsList) {
+        options.report("subpixel: " + name + ", " + std::to_string(bits) + " bits");
         SubPixelPoint p;
         p.scene = name;
         p.bits = bits;
@@ -325,9 +327,7 @@ std::vector<SubPixelPoint> sweepSubPixel(const SweepOptions& options) {
 SweepTable subPixelTable(const std::vector<SubPixelPoint>& points) {
     SweepTable t;
     t.name = "subpixel";
-    t.title =
-        "Sub-pixel precision: coverage against the exact coverage, error against the "
-        "ground truth, and frame time, per fractional bits of the snapping grid";
+    t.title = "Sub-pixel precision: coverage, error and time against the snapping grid's bits";
     t.columns = {"scene",        "bits",      "width",      "height", "triangles",      "covered",
                  "differ",       "ambiguous", "differ_pct", "cracks", "layers_changed", "rmse",
                  "over2lsb_pct", "median_ms", "min_ms",     "max_ms"};

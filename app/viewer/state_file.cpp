@@ -49,6 +49,7 @@ std::string stateText(const ViewerModel& m, long long frames) {
     s << "interp " << toString(m.settings.interp) << "\n";
     s << "lighting " << toString(m.settings.lighting) << "\n";
     s << "subpixel_bits " << m.settings.subPixelBits << "\n";
+    s << "supersample " << m.settings.supersample << "\n";
     s << "renderer " << toString(m.rendererChoice) << "\n";
     return s.str();
 }
