@@ -43,8 +43,7 @@ std::vector<Sweep> allSweeps() {
         {"depth", [](const SweepOptions& o) { return depthTable(sweepDepth(o)); }},
         {"subpixel", [](const SweepOptions& o) { return subPixelTable(sweepSubPixel(o)); }},
         {"extreme", [](const SweepOptions& o) { return extremeTable(sweepExtreme(o)); }},
-        {"camera_paths",
-         [](const SweepOptions& o) { return cameraTable(sweepCameraPaths(o)); }},
+        {"camera_paths", [](const SweepOptions& o) { return cameraTable(sweepCameraPaths(o)); }},
     };
 }
 
@@ -75,7 +74,8 @@ int runSweeps(const SweepsOptions& o) {
         for (const Sweep& s : allSweeps()) known = known || n == s.name;
         if (!known) {
             std::string names;
-            for (const Sweep& s : allSweeps()) names += std::string(names.empty() ? "" : ", ") + s.name;
+            for (const Sweep& s : allSweeps())
+                names += std::string(names.empty() ? "" : ", ") + s.name;
             std::fprintf(stderr, "--only: no sweep named '%s' (there are: %s)\n", n.c_str(),
                          names.c_str());
             return kBadInput;
@@ -142,8 +142,7 @@ int runSweeps(const SweepsOptions& o) {
             continue;
         }
         const std::string png = (fs::path(o.out) / (table.name + ".png")).string();
-        const std::string title =
-            table.title + " (" + machine.cpu + ", " + machine.date + ")";
+        const std::string title = table.title + " (" + machine.cpu + ", " + machine.date + ")";
         if (Status st = runGnuplotScript(
                 o.gnuplot, {"-e",
                             "datafile=" + gpString(csv) + "; outfile=" + gpString(png) +

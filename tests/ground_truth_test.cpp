@@ -17,21 +17,14 @@
 #include "facet/ground_truth.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
+#include "world_at.hpp"
 
 namespace {
 
 using facet::GroundTruth;
 using facet::ImageError;
 
-// The world point that projects to pixel position (px, py) at camera depth z (conventions §4).
-glm::vec3 worldAt(const facet::Camera& cam, double px, double py, double z) {
-    const glm::dvec3 zAxis = glm::normalize(cam.look - cam.eye);
-    const glm::dvec3 xAxis = glm::normalize(glm::cross(cam.up, zAxis));
-    const glm::dvec3 yAxis = glm::cross(zAxis, xAxis);
-    const double x = (px - cam.width / 2.0) / cam.focal * z;
-    const double y = (py - cam.height / 2.0) / cam.focal * z;
-    return glm::vec3(cam.eye + x * xAxis + y * yAxis + z * zAxis);
-}
+using facet::test::worldAt;
 
 // One flat-coloured triangle through three pixel positions, at depth 2, on a small image.
 facet::Scene triangleScene(int width, int height, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c,

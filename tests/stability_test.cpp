@@ -28,15 +28,15 @@
 
 #include <glm/geometric.hpp>
 
+#include "accuracy/sweep_depth.hpp"
+#include "accuracy/sweep_highlights.hpp"
+#include "accuracy/sweep_view_angle.hpp"
 #include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
-#include "accuracy/sweep_depth.hpp"
-#include "accuracy/sweep_highlights.hpp"
-#include "accuracy/sweep_view_angle.hpp"
 #include "image_compare.hpp"
 
 namespace facet {
@@ -670,9 +670,10 @@ TEST(ViewAngle, AffineDegradesWithAnglePerspectiveStaysExact) {
         // Where the interpolation fails, as charted. Facet: affine 5.9 LSB at 0.5°, 11.1 at 1°;
         // subdivided:16 6.9 at 30°, 9.4 at 40°. Floor: affine 35.3 at 0.5° (its two triangles
         // span depths from 1 to 15 units); subdivided:16 6.9 at 30°, 8.9 at 40°.
-        std::printf("[stability] %s: RMSE first exceeds 8 LSB at affine %g deg, subdivided:16 %g "
-                    "deg\n",
-                    surface, affineCross, subCross);
+        std::printf(
+            "[stability] %s: RMSE first exceeds 8 LSB at affine %g deg, subdivided:16 %g "
+            "deg\n",
+            surface, affineCross, subCross);
         EXPECT_EQ(affineCross, std::string(surface) == "facet" ? 1.0 : 0.5) << surface;
         EXPECT_EQ(subCross, 40.0) << surface;
     }
@@ -724,9 +725,10 @@ TEST(Highlights, GouraudLosesTheHighlightAsShininessGrows) {
     int rings = 0;
     for (const app::HighlightPoint& p : points) {
         if (p.rings != rings) previous = 2.0, rings = p.rings;
-        std::printf("[stability] highlight rings=%-3d s=%-5g gouraud/phong peak %.2f, RMSE vs "
-                    "ground truth gouraud %.2f phong %.2f\n",
-                    p.rings, p.shininess, p.peakRatio, p.gouraudRmse, p.phongRmse);
+        std::printf(
+            "[stability] highlight rings=%-3d s=%-5g gouraud/phong peak %.2f, RMSE vs "
+            "ground truth gouraud %.2f phong %.2f\n",
+            p.rings, p.shininess, p.peakRatio, p.gouraudRmse, p.phongRmse);
         ASSERT_GT(p.phongPeak, 0);
         EXPECT_GE(p.phongPeak, p.shininess <= 64.0 ? 250 : 200) << p.rings << " " << p.shininess;
         // A sharper highlight is never better sampled by the same vertices.

@@ -15,6 +15,7 @@
 #include "facet/ground_truth.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
+#include "world_at.hpp"
 
 namespace {
 
@@ -22,15 +23,7 @@ using facet::Framebuffer;
 using facet::RenderSettings;
 using facet::Scene;
 
-// The world point that projects to pixel position (px, py) at camera depth z (conventions §4).
-glm::vec3 worldAt(const facet::Camera& cam, double px, double py, double z) {
-    const glm::dvec3 zAxis = glm::normalize(cam.look - cam.eye);
-    const glm::dvec3 xAxis = glm::normalize(glm::cross(cam.up, zAxis));
-    const glm::dvec3 yAxis = glm::cross(zAxis, xAxis);
-    const double x = (px - cam.width / 2.0) / cam.focal * z;
-    const double y = (py - cam.height / 2.0) / cam.focal * z;
-    return glm::vec3(cam.eye + x * xAxis + y * yAxis + z * zAxis);
-}
+using facet::test::worldAt;
 
 // White triangles through pixel positions, at depth 2, on a black 24×16 image.
 Scene triangles(const std::vector<glm::dvec2>& corners) {
@@ -74,9 +67,15 @@ TEST(Supersample, OneSampleIsTheOrdinaryFrame) {
 // Coverage per pixel from N×N samples equals the ground truth's at the same N: slanted edges,
 // a sliver and a small triangle, N = 2, 3, 4.
 TEST(Supersample, CoverageIsTheGroundTruthsAtTheSameSamples) {
-    const Scene scene = triangles({{2.3, 1.1}, {21.7, 3.4}, {6.2, 14.6},       // a big slanted one
-                                   {14.1, 9.05}, {23.3, 15.2}, {14.9, 15.8},  // a sliver-ish one
-                                   {19.2, 1.2}, {20.9, 1.7}, {19.6, 3.1}});   // a small one
+    const Scene scene = triangles({{2.3, 1.1},
+                                   {21.7, 3.4},
+                                   {6.2, 14.6},  // a big slanted one
+                                   {14.1, 9.05},
+                                   {23.3, 15.2},
+                                   {14.9, 15.8},  // a sliver-ish one
+                                   {19.2, 1.2},
+                                   {20.9, 1.7},
+                                   {19.6, 3.1}});  // a small one
     RenderSettings s;
     s.shader = facet::ShaderKind::Simple;
     s.background = 0x000000;

@@ -20,21 +20,14 @@
 #include "facet/ground_truth.hpp"
 #include "facet/reference.hpp"
 #include "facet/texture.hpp"
+#include "world_at.hpp"
 
 namespace {
 
 using namespace facet;
 using namespace facet::view;
 
-// The world point that projects to pixel position (px, py) at camera depth z (conventions §4).
-glm::vec3 worldAt(const Camera& cam, double px, double py, double z) {
-    const glm::dvec3 zAxis = glm::normalize(cam.look - cam.eye);
-    const glm::dvec3 xAxis = glm::normalize(glm::cross(cam.up, zAxis));
-    const glm::dvec3 yAxis = glm::cross(zAxis, xAxis);
-    const double x = (px - cam.width / 2.0) / cam.focal * z;
-    const double y = (py - cam.height / 2.0) / cam.focal * z;
-    return glm::vec3(cam.eye + x * xAxis + y * yAxis + z * zAxis);
-}
+using facet::test::worldAt;
 
 // A floor-like quad receding from depth 1.5 at the bottom of the image to 12 at the top, a
 // checkerboard tiled 4×4 times over it: affine interpolation bends its lines visibly. With
@@ -141,8 +134,7 @@ TEST(AccuracyMethods, AroundTheUserSettingsKeepTheirShaderAndCombine) {
         if (m.axis != "lighting") {
             EXPECT_EQ(m.settings.lighting, Lighting::Gouraud) << m.name;
         }
-        EXPECT_EQ(m.settings.supersample, m.name == "2x2" ? 2 : m.name == "4x4" ? 4 : 1)
-            << m.name;
+        EXPECT_EQ(m.settings.supersample, m.name == "2x2" ? 2 : m.name == "4x4" ? 4 : 1) << m.name;
     }
     EXPECT_EQ(methods[0].name, "affine");
     EXPECT_EQ(methods[4].name, "perspective");

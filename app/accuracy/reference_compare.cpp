@@ -1,11 +1,27 @@
 #include "reference_compare.hpp"
 
+#include "sweep_table.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
 
 namespace facet::app {
+
+std::vector<std::string> referenceDiffColumns() {
+    return {"fast_covered",  "ref_covered",    "ambiguous",
+            "coverage_diff", "max_color_diff", "nan_depth"};
+}
+
+std::vector<std::string> referenceDiffCells(const ReferenceDiff& d) {
+    return {cell(static_cast<double>(d.fastCovered)),
+            cell(static_cast<double>(d.refCovered)),
+            cell(static_cast<double>(d.ambiguous)),
+            cell(static_cast<double>(d.coverageDiffers)),
+            cell(d.maxColorDiff),
+            cell(static_cast<double>(d.nanDepth))};
+}
 namespace {
 
 /// Largest per-channel difference of two packed RGBA pixels, alpha ignored.

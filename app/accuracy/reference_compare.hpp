@@ -7,6 +7,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
@@ -24,6 +26,13 @@ struct ReferenceDiff {
     int maxColorDiff = 0;      ///< largest channel difference (8-bit steps) where coverage agrees
     std::size_t nanDepth = 0;  ///< NaN depth values in the fast frame (must be none)
 };
+
+/// The sweep tables' columns for a ReferenceDiff: fast_covered, ref_covered, ambiguous,
+/// coverage_diff, max_color_diff, nan_depth.
+std::vector<std::string> referenceDiffColumns();
+
+/// The cells of those columns for `d`.
+std::vector<std::string> referenceDiffCells(const ReferenceDiff& d);
 
 /// Compares `fast` with `ref`. Coverage is judged by depth (finite: drawn) for depth-tested
 /// shaders and by colour against the background for Simple, which never writes depth.

@@ -239,33 +239,27 @@ SweepTable cameraTable(const std::vector<CameraPoint>& points) {
     t.title = "Camera paths: fast path (perspective, Gouraud, one thread) against the reference";
     if (!points.empty())
         t.title += ", " + std::to_string(points[0].width) + "x" + std::to_string(points[0].height);
-    t.columns = {
-        "path",      "label",        "step",        "param",     "width",         "height",
-        "ms",        "ms_min",       "ms_max",      "ref_ms",    "triangles",     "clipped",
-        "fragments", "fast_covered", "ref_covered", "ambiguous", "coverage_diff", "max_color_diff",
-        "nan_depth", "must_draw",    "degenerate"};
+    t.columns = {"path",   "label",  "step",   "param",     "width",   "height",   "ms",
+                 "ms_min", "ms_max", "ref_ms", "triangles", "clipped", "fragments"};
+    for (std::string& c : referenceDiffColumns()) t.columns.push_back(std::move(c));
+    t.columns.insert(t.columns.end(), {"must_draw", "degenerate"});
     for (const CameraPoint& p : points) {
-        t.add({p.path,
-               p.label,
-               cell(p.step),
-               cell(p.param),
-               cell(p.width),
-               cell(p.height),
-               cell(p.ms),
-               cell(p.msMin),
-               cell(p.msMax),
-               cell(p.refMs),
-               cell(static_cast<double>(p.triangles)),
-               cell(static_cast<double>(p.clipped)),
-               cell(static_cast<double>(p.fragments)),
-               cell(static_cast<double>(p.diff.fastCovered)),
-               cell(static_cast<double>(p.diff.refCovered)),
-               cell(static_cast<double>(p.diff.ambiguous)),
-               cell(static_cast<double>(p.diff.coverageDiffers)),
-               cell(p.diff.maxColorDiff),
-               cell(static_cast<double>(p.diff.nanDepth)),
-               cell(p.mustDraw ? 1.0 : 0.0),
-               cell(p.degenerate ? 1.0 : 0.0)});
+        std::vector<std::string> row{p.path,
+                                     p.label,
+                                     cell(p.step),
+                                     cell(p.param),
+                                     cell(p.width),
+                                     cell(p.height),
+                                     cell(p.ms),
+                                     cell(p.msMin),
+                                     cell(p.msMax),
+                                     cell(p.refMs),
+                                     cell(static_cast<double>(p.triangles)),
+                                     cell(static_cast<double>(p.clipped)),
+                                     cell(static_cast<double>(p.fragments))};
+        for (std::string& c : referenceDiffCells(p.diff)) row.push_back(std::move(c));
+        row.insert(row.end(), {cell(p.mustDraw ? 1.0 : 0.0), cell(p.degenerate ? 1.0 : 0.0)});
+        t.add(std::move(row));
     }
     return t;
 }

@@ -12,9 +12,9 @@ namespace facet::app {
 
 /// One distance and relative gap: how much of the far plane shows through the near one.
 struct DepthPoint {
-    double distance = 0.0;  ///< d, camera to the planes along the view axis
+    double distance = 0.0;     ///< d, camera to the planes along the view axis
     double relativeGap = 0.0;  ///< δ / d
-    double fighting = 0.0;  ///< share (0…1) of the covered pixels where the far plane shows
+    double fighting = 0.0;     ///< share (0…1) of the covered pixels where the far plane shows
 };
 
 /// The share of the far plane showing through for planes δ apart at distance d: two 60°-tilted

@@ -304,31 +304,26 @@ SweepTable extremeTable(const std::vector<ExtremePoint>& points) {
     t.title = "Extreme triangles: fast path (one thread) against the reference";
     if (!points.empty())
         t.title += ", " + std::to_string(points[0].width) + "x" + std::to_string(points[0].height);
-    t.columns = {"family",        "label",          "step",         "param",       "width",
-                 "height",        "fast_us",        "fast_us_min",  "fast_us_max", "ref_ms",
-                 "fragments",     "clipped",        "fast_covered", "ref_covered", "ambiguous",
-                 "coverage_diff", "max_color_diff", "nan_depth",    "must_draw",   "exact_color"};
+    t.columns = {"family",  "label",       "step",        "param",  "width",     "height",
+                 "fast_us", "fast_us_min", "fast_us_max", "ref_ms", "fragments", "clipped"};
+    for (std::string& c : referenceDiffColumns()) t.columns.push_back(std::move(c));
+    t.columns.insert(t.columns.end(), {"must_draw", "exact_color"});
     for (const ExtremePoint& p : points) {
-        t.add({p.family,
-               p.label,
-               cell(p.step),
-               cell(p.param),
-               cell(p.width),
-               cell(p.height),
-               cell(p.fastUs),
-               cell(p.fastUsMin),
-               cell(p.fastUsMax),
-               cell(p.refMs),
-               cell(static_cast<double>(p.fragments)),
-               cell(static_cast<double>(p.clipped)),
-               cell(static_cast<double>(p.diff.fastCovered)),
-               cell(static_cast<double>(p.diff.refCovered)),
-               cell(static_cast<double>(p.diff.ambiguous)),
-               cell(static_cast<double>(p.diff.coverageDiffers)),
-               cell(p.diff.maxColorDiff),
-               cell(static_cast<double>(p.diff.nanDepth)),
-               cell(p.mustDraw ? 1.0 : 0.0),
-               cell(p.exactColor ? 1.0 : 0.0)});
+        std::vector<std::string> row{p.family,
+                                     p.label,
+                                     cell(p.step),
+                                     cell(p.param),
+                                     cell(p.width),
+                                     cell(p.height),
+                                     cell(p.fastUs),
+                                     cell(p.fastUsMin),
+                                     cell(p.fastUsMax),
+                                     cell(p.refMs),
+                                     cell(static_cast<double>(p.fragments)),
+                                     cell(static_cast<double>(p.clipped))};
+        for (std::string& c : referenceDiffCells(p.diff)) row.push_back(std::move(c));
+        row.insert(row.end(), {cell(p.mustDraw ? 1.0 : 0.0), cell(p.exactColor ? 1.0 : 0.0)});
+        t.add(std::move(row));
     }
     return t;
 }

@@ -356,9 +356,8 @@ RenderStats Renderer::renderView(const Scene& scene, const Camera& cam,
     return stats;
 }
 
-void Renderer::drawNormals(const Scene& scene, const Camera& camera,
-                           const RenderSettings& settings, float nearPlane, Framebuffer& frame,
-                           RenderStats& stats) {
+void Renderer::drawNormals(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                           float nearPlane, Framebuffer& frame, RenderStats& stats) {
     const Mesh& mesh = scene.mesh;
     const float length = settings.normalLength > 0.0 ? static_cast<float>(settings.normalLength)
                                                      : normalDisplayLength(mesh);

@@ -18,7 +18,7 @@ void resolveSupersampled(const Framebuffer& big, int n, Framebuffer& out, int th
     out.resize(w, h);
     const std::uint32_t count = static_cast<std::uint32_t>(n * n);
     const std::uint32_t half = count / 2;  // round to nearest
-#pragma omp parallel for num_threads(threads) if (static_cast<long>(w) * h > 65536)
+#pragma omp parallel for num_threads(threads) if (static_cast <long>(w) * h > 65536)
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             std::uint32_t sum[4] = {0, 0, 0, 0};
