@@ -171,6 +171,13 @@ TEST(TwinDifferences, NamedForTheSettingsThatHaveThem) {
     EXPECT_EQ(std::count(all.begin(), all.end(), '\n'), 2) << all;  // three lines
     EXPECT_NE(all.find("mip level"), std::string::npos);
     EXPECT_NE(all.find("Bresenham"), std::string::npos);
+    // The engine's supersampling and sub-pixel grid have no twin counterpart (solid mode).
+    s = facet::RenderSettings{};
+    s.supersample = 2;
+    s.subPixelBits = 4;
+    const std::string grid = facet::GlRenderer::differences(s);
+    EXPECT_NE(grid.find("supersample"), std::string::npos) << grid;
+    EXPECT_NE(grid.find("sub-pixel"), std::string::npos) << grid;
 }
 
 }  // namespace

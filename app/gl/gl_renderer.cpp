@@ -189,6 +189,10 @@ std::string GlRenderer::differences(const RenderSettings& settings) {
         lines += "trilinear: GL picks the mip level per 2x2 pixels, with 8-bit fractions\n";
     if (settings.mode == DrawMode::Wireframe || settings.showNormals)
         lines += "lines follow GL's rules, not Bresenham: a few line pixels differ\n";
+    if (settings.mode == DrawMode::Solid && settings.supersample > 1)
+        lines += "one sample per pixel: the twin does not supersample\n";
+    if (settings.mode == DrawMode::Solid && settings.subPixelBits != kMaxSubPixelBits)
+        lines += "the driver snaps to its own sub-pixel grid, not the chosen bits\n";
     if (!lines.empty()) lines.pop_back();
     return lines;
 }

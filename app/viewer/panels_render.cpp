@@ -85,14 +85,11 @@ void renderPanel(App& app) {
         int bits = s.subPixelBits;
         if (ImGui::SliderInt("sub-pixel bits", &bits, kMinSubPixelBits, kMaxSubPixelBits))
             s.subPixelBits = std::clamp(bits, kMinSubPixelBits, kMaxSubPixelBits);  // Ctrl+click
-        if (s.subPixelBits != kMaxSubPixelBits && app.model.rendererChoice != RendererChoice::Cpu)
-            ImGui::TextDisabled("(the OpenGL twin snaps with its own precision)");
-        // Supersampling: N×N samples per pixel, about N² times the work.
+        // Supersampling: N×N samples per pixel, about N² times the work. (Where the OpenGL twin
+        // departs from these two, the twin's note above says so.)
         static const char* const kSamples[] = {"1 per pixel", "2 x 2", "3 x 3", "4 x 4"};
         int ss = std::clamp(s.supersample, 1, 4) - 1;
         if (ImGui::Combo("samples", &ss, kSamples, 4)) s.supersample = ss + 1;
-        if (s.supersample > 1 && app.model.rendererChoice != RendererChoice::Cpu)
-            ImGui::TextDisabled("(the OpenGL twin draws one sample per pixel)");
     }
     float rgb[3];
     rgbFromHex(s.background, rgb);

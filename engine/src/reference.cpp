@@ -16,7 +16,8 @@
 //  2. The image starts as the background (0xRRGGBB, byte/255 per channel), depth +inf.
 //  3. Vertex colours are the mesh colours, or white when there are none; for Gouraud lighting
 //     they are replaced by the lit colours shade(rgb, I(p_i, n_i)) (conventions §6).
-//  4. Solid: triangles in index order, clipped against w >= near (Sutherland–Hodgman, new
+//  4. Solid: triangles in index order (one with a NaN or infinite x, y or w has no position and
+//     draws nothing, as in the fast path), clipped against w >= near (Sutherland–Hodgman, new
 //     vertices computed from the inside vertex), fanned (v0, vk, vk+1), then rasterized with the
 //     top-left rule at pixel centres; depth is always 1/q, perspective-correct (q = Σ λ_i/w_i),
 //     the varyings use the weights of rule 11.
@@ -196,6 +197,12 @@ bool isTopLeft(const glm::dvec2& a, const glm::dvec2& b) {
     const double dy = b.y - a.y;
     const double dx = b.x - a.x;
     return dy < 0.0 || (dy == 0.0 && dx > 0.0);
+}
+
+// x, y and w finite (z is never read: depth is w): w = +inf would otherwise project to pixel
+// (0, 0) and draw.
+bool finiteClip(const glm::dvec4& c) {
+    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.w);
 }
 
 // Pixels whose centres lie in [lo, hi] along one axis, clamped to [0, size-1]; first > last when
@@ -492,6 +499,11 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
                 const std::uint32_t i1 = input.indices[t + 1];
                 const std::uint32_t i2 = input.indices[t + 2];
                 if (!valid(i0) || !valid(i1) || !valid(i2)) continue;
+                if (!finiteClip(input.clip[i0]) || !finiteClip(input.clip[i1]) ||
+                    !finiteClip(input.clip[i2])) {
+                    tracker.add(1.0);
+                    continue;
+                }
                 const Polygon poly =
                     clipNear({vertex(i0), vertex(i1), vertex(i2)}, input.nearPlane);
                 for (std::size_t k = 1; k + 1 < poly.count; ++k) {
