@@ -190,8 +190,8 @@ void setupCoverageSmall(benchmark::State& state) {
     for (Snapped& t : tris) {
         const double cx = rng.uniform(0.0, 1920.0), cy = rng.uniform(0.0, 1080.0);
         for (int i = 0; i < 3; ++i) {
-            t.x[i] = snap(cx + rng.uniform(-6.0, 6.0));
-            t.y[i] = snap(cy + rng.uniform(-6.0, 6.0));
+            t.x[i] = SnapGrid{}(cx + rng.uniform(-6.0, 6.0));
+            t.y[i] = SnapGrid{}(cy + rng.uniform(-6.0, 6.0));
         }
     }
     const PixelRect screen{0, 0, 1919, 1079};
@@ -226,8 +226,8 @@ std::vector<CoverageSetup> rasterTriangles(double area) {
         std::int64_t xs[3], ys[3];
         for (int i = 0; i < 3; ++i) {
             const glm::dvec2 d = shape[i] - centroid;
-            xs[i] = snap(at.x + c * d.x - sn * d.y);
-            ys[i] = snap(at.y + sn * d.x + c * d.y);
+            xs[i] = SnapGrid{}(at.x + c * d.x - sn * d.y);
+            ys[i] = SnapGrid{}(at.y + sn * d.x + c * d.y);
         }
         CoverageSetup setup;
         if (setupCoverage(xs, ys, clip, setup) != Facing::Degenerate) setups.push_back(setup);

@@ -151,16 +151,18 @@ TEST(ExtremeTriangles, SliversOfAspectMillionMatchReference) {
     }
 }
 
+/// A named triangle in clip space.
+struct ClipCase {
+    const char* name;
+    std::vector<glm::vec4> clip;
+};
+
 // Vertices at ±1e7 px (a float's spacing there is a whole pixel): triangles crossing the
 // screen from far outside the guard band, with and without varying w.
 TEST(ExtremeTriangles, VerticesAtTenMillionPixelsMatchReference) {
     const int w = 64, h = 48;
     const double big = 1e7;
-    struct Case {
-        const char* name;
-        std::vector<glm::vec4> clip;
-    };
-    const std::vector<Case> cases = {
+    const std::vector<ClipCase> cases = {
         {"covers all", {atPixel(-big, -big), atPixel(big, -0.3 * big), atPixel(-0.2 * big, big)}},
         {"wedge through",
          {atPixel(-big, -0.5 * big + 20), atPixel(big, 0.5 * big + 20),
@@ -170,7 +172,8 @@ TEST(ExtremeTriangles, VerticesAtTenMillionPixelsMatchReference) {
         {"all outside", {atPixel(-big, -big), atPixel(-big, big), atPixel(-0.5 * big, 0)}},
         {"far w", {atPixel(-big, -big, 1e4), atPixel(big, -big, 0.5), atPixel(0, big, 3.0)}},
     };
-    for (const Case& c : cases) expectSameCoverage(checkCoverage(c.clip, {0, 1, 2}, w, h), c.name);
+    for (const ClipCase& c : cases)
+        expectSameCoverage(checkCoverage(c.clip, {0, 1, 2}, w, h), c.name);
 }
 
 // On and across the near plane: vertices behind the camera, exactly on the plane, just in front
@@ -178,11 +181,7 @@ TEST(ExtremeTriangles, VerticesAtTenMillionPixelsMatchReference) {
 TEST(ExtremeTriangles, NearPlaneCrossingsMatchReference) {
     const int w = 64, h = 48;
     const float n = 0.01f;
-    struct Case {
-        const char* name;
-        std::vector<glm::vec4> clip;
-    };
-    const std::vector<Case> cases = {
+    const std::vector<ClipCase> cases = {
         {"one behind", {atPixel(10, 10, 2.0), atPixel(50, 12, 1.0), atPixel(30, 40, -1.0)}},
         {"two behind", {atPixel(10, 10, 2.0), atPixel(50, 12, -0.5), atPixel(30, 40, -3.0)}},
         {"all behind", {atPixel(10, 10, -2.0), atPixel(50, 12, -0.5), atPixel(30, 40, -3.0)}},
@@ -194,7 +193,7 @@ TEST(ExtremeTriangles, NearPlaneCrossingsMatchReference) {
         {"w = 0", {glm::vec4(1e3f, 5e2f, 0.0f, 0.0f), atPixel(50, 12, 1.0), atPixel(3, 40, 2.0)}},
         {"huge w", {atPixel(10, 10, 1e30), atPixel(50, 12, 1.0), atPixel(30, 40, 1e-2)}},
     };
-    for (const Case& c : cases)
+    for (const ClipCase& c : cases)
         expectSameCoverage(checkCoverage(c.clip, {0, 1, 2}, w, h, n), c.name);
 }
 

@@ -1,5 +1,7 @@
 #include "accuracy_methods.hpp"
 
+#include "frame_times.hpp"
+
 #include <algorithm>
 #include <chrono>
 
@@ -67,22 +69,27 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSett
 }
 
 void summarise(std::vector<double> ms, AccuracyResult& r) {
-    std::sort(ms.begin(), ms.end());
-    const std::size_t n = ms.size();
-    r.medianMs = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-    r.minMs = ms.front();
-    r.maxMs = ms.back();
-    r.frames = static_cast<int>(n);
+    const FrameTimes t = summarize(std::move(ms));
+    r.medianMs = t.median;
+    r.minMs = t.min;
+    r.maxMs = t.max;
+    r.frames = t.frames;
 }
 
 std::vector<std::vector<double>> timeMethods(Renderer& renderer, const Scene& scene,
                                              const std::vector<AccuracyMethod>& methods, int frames,
-                                             int warmup, Framebuffer& frame) {
-    for (int i = 0; i < warmup; ++i)
-        for (const AccuracyMethod& m : methods) renderer.render(scene, m.settings, frame);
+                                             int warmup, Framebuffer& frame,
+                                             const std::function<void(std::size_t)>& beforeRender) {
+    for (int i = 0; i < warmup; ++i) {
+        for (std::size_t k = 0; k < methods.size(); ++k) {
+            if (beforeRender) beforeRender(k);
+            renderer.render(scene, methods[k].settings, frame);
+        }
+    }
     std::vector<std::vector<double>> ms(methods.size());
     for (int f = 0; f < frames; ++f) {
         for (std::size_t k = 0; k < methods.size(); ++k) {
+            if (beforeRender) beforeRender(k);
             const auto start = std::chrono::steady_clock::now();
             renderer.render(scene, methods[k].settings, frame);
             ms[k].push_back(

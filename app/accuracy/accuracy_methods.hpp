@@ -2,6 +2,8 @@
 // What `facet accuracy` measures: per scene, each of the fast path's approximations as one
 // method (one RenderSettings), all judged against one ground truth of the scene.
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,9 +55,11 @@ void summarise(std::vector<double> ms, AccuracyResult& r);
 
 /// Times every method round-robin: `warmup` untimed frames each, then per round one timed frame
 /// each, so a stretch when another process holds the cores slows every method alike instead of
-/// the one that happened to be measured then. Returns the frame times (ms) per method.
-std::vector<std::vector<double>> timeMethods(Renderer& renderer, const Scene& scene,
-                                             const std::vector<AccuracyMethod>& methods, int frames,
-                                             int warmup, Framebuffer& frame);
+/// the one that happened to be measured then. `beforeRender`, when set, is called with the
+/// method's index before each frame (progress; it may throw to stop). Returns the frame times
+/// (ms) per method.
+std::vector<std::vector<double>> timeMethods(
+    Renderer& renderer, const Scene& scene, const std::vector<AccuracyMethod>& methods, int frames,
+    int warmup, Framebuffer& frame, const std::function<void(std::size_t)>& beforeRender = {});
 
 }  // namespace facet::app

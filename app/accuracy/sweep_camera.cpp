@@ -1,5 +1,7 @@
 #include "sweep_camera.hpp"
 
+#include "frame_times.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -101,19 +103,12 @@ CameraPoint measure(const std::string& path, const std::string& lbl, int step, d
     // One thread: on a loaded or small machine the thread pool's hand-offs make the frame time
     // noise; one thread's time is the frame's own cost.
     s.threads = 1;
-    std::vector<double> ms;
     RenderStats stats;
-    for (int f = 0; f <= std::max(1, frames); ++f) {
-        const Clock::time_point t0 = Clock::now();
-        stats = renderer.render(scene, s, fb);
-        const double t = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-        if (f > 0) ms.push_back(t);
-    }
-    std::sort(ms.begin(), ms.end());
-    p.frames = static_cast<int>(ms.size());
-    p.ms = ms[ms.size() / 2];
-    p.msMin = ms.front();
-    p.msMax = ms.back();
+    const FrameTimes times = timeRepeated(frames, [&] { stats = renderer.render(scene, s, fb); });
+    p.frames = times.frames;
+    p.ms = times.median;
+    p.msMin = times.min;
+    p.msMax = times.max;
     p.triangles = stats.trianglesIn;
     p.clipped = stats.trianglesClipped;
     p.fragments = stats.fragments;

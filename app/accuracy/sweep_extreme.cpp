@@ -1,5 +1,7 @@
 #include "sweep_extreme.hpp"
 
+#include "frame_times.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -245,11 +247,11 @@ ExtremePoint measure(const Case& c, int step, int w, int h, int frames, Renderer
         const double t = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
         if (f > 0) us.push_back(t);
     }
-    std::sort(us.begin(), us.end());
-    p.frames = static_cast<int>(us.size());
-    p.fastUs = us[us.size() / 2];
-    p.fastUsMin = us.front();
-    p.fastUsMax = us.back();
+    const FrameTimes times = summarize(std::move(us));
+    p.frames = times.frames;
+    p.fastUs = times.median;
+    p.fastUsMin = times.min;
+    p.fastUsMax = times.max;
     p.fragments = stats.fragments;
     p.clipped = stats.trianglesClipped;
     // The reference sees exactly the floats the fast path sees (or what must remain of them),

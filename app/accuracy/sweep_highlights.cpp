@@ -2,6 +2,8 @@
 
 #include "sweep_highlights.hpp"
 
+#include "frame_times.hpp"
+
 #include <algorithm>
 
 #include <glm/geometric.hpp>
@@ -65,11 +67,13 @@ std::vector<HighlightPoint> sweepHighlights(const SweepOptions& options) {
             const GroundTruth truth = renderGroundTruth(scene, settings, options.samples);
             HighlightPoint p{rings, s};
             settings.lighting = Lighting::Gouraud;
-            p.gouraudMs = medianRenderMs(renderer, scene, settings, options.frames, fb);
+            p.gouraudMs =
+                timeRepeated(options.frames, [&] { renderer.render(scene, settings, fb); }).median;
             p.gouraudPeak = peak(fb);
             p.gouraudRmse = measureError(fb, truth).interiorRmse;
             settings.lighting = Lighting::Phong;
-            p.phongMs = medianRenderMs(renderer, scene, settings, options.frames, fb);
+            p.phongMs =
+                timeRepeated(options.frames, [&] { renderer.render(scene, settings, fb); }).median;
             p.phongPeak = peak(fb);
             p.phongRmse = measureError(fb, truth).interiorRmse;
             p.peakRatio = p.phongPeak > 0 ? static_cast<double>(p.gouraudPeak) / p.phongPeak : 0.0;

@@ -1,8 +1,6 @@
 #include "sweep_table.hpp"
 
-#include <algorithm>
 #include <cassert>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -12,21 +10,6 @@ namespace facet::app {
 void SweepTable::add(std::vector<std::string> cells) {
     assert(cells.size() == columns.size());
     rows.push_back(std::move(cells));
-}
-
-double medianRenderMs(Renderer& renderer, const Scene& scene, const RenderSettings& settings,
-                      int frames, Framebuffer& frame) {
-    renderer.render(scene, settings, frame);  // warm-up: scratch buffers, caches, mip chain
-    std::vector<double> ms;
-    for (int f = 0; f < std::max(1, frames); ++f) {
-        const auto t0 = std::chrono::steady_clock::now();
-        renderer.render(scene, settings, frame);
-        ms.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                .count());
-    }
-    std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
 }
 
 std::string cell(double v) {

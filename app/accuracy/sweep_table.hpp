@@ -8,10 +8,6 @@
 #include <vector>
 
 #include "facet/error.hpp"
-#include "facet/framebuffer.hpp"
-#include "facet/render.hpp"
-#include "facet/scene.hpp"
-#include "facet/settings.hpp"
 
 namespace facet::app {
 
@@ -41,11 +37,6 @@ struct SweepTable {
     /// Appends a row; the cells must match the columns in number (asserted).
     void add(std::vector<std::string> cells);
 };
-
-/// The median time (ms) of `frames` renders (at least one) after one untimed warm-up render;
-/// `frame` holds the last image.
-double medianRenderMs(Renderer& renderer, const Scene& scene, const RenderSettings& settings,
-                      int frames, Framebuffer& frame);
 
 /// A number as a CSV cell: %.9g; NaN as "nan", infinities as "inf" / "-inf".
 std::string cell(double v);

@@ -10,6 +10,8 @@
 
 #include "sweep_view_angle.hpp"
 
+#include "frame_times.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -154,7 +156,7 @@ std::vector<ViewAnglePoint> sweepViewAngle(const SweepOptions& options) {
                 s.interp = m.interp;
                 s.subdivision = m.n;
                 ViewAnglePoint p{surface.name, deg, m.name};
-                p.ms = medianRenderMs(renderer, scene, s, options.frames, fb);
+                p.ms = timeRepeated(options.frames, [&] { renderer.render(scene, s, fb); }).median;
                 const ImageError e = interiorError(fb, truth);
                 p.rmse = e.rmse;
                 p.maxError = e.maxError;

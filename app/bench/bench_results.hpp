@@ -6,18 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "accuracy/frame_times.hpp"
+
 namespace facet::app {
-
-/// Median, min and max of the timed frames, in milliseconds.
-struct FrameTimes {
-    int frames = 0;
-    double median = 0.0;
-    double min = 0.0;
-    double max = 0.0;
-};
-
-/// Summarises frame times (any order); an empty list gives frames = 0.
-FrameTimes summarize(std::vector<double> ms);
 
 /// Renderer names as they appear in the CSV.
 inline constexpr const char* kEngine = "engine";

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <utility>
 
+#include "accuracy/frame_times.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/render.hpp"
 #include "frame_stats.hpp"
@@ -26,14 +27,6 @@ std::string percent(double fraction) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%d %%", static_cast<int>(std::floor(100.0 * fraction)));
     return buf;
-}
-
-// The settings as the methods render them: a Solid picture without the overlays.
-RenderSettings solid(RenderSettings s) {
-    s.mode = DrawMode::Solid;
-    s.showNormals = false;
-    s.depthLegend = false;
-    return s;
 }
 
 }  // namespace
@@ -63,12 +56,6 @@ bool sameMethod(const RenderSettings& a, const RenderSettings& b) {
            a.cullBackFaces == b.cullBackFaces && a.background == b.background &&
            a.nearPlane == b.nearPlane && a.subPixelBits == b.subPixelBits &&
            a.supersample == b.supersample;
-}
-
-bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
-    return sameMethod(a, b) && a.mode == b.mode && a.subdivision == b.subdivision &&
-           a.showNormals == b.showNormals && a.normalLength == b.normalLength &&
-           a.depthLegend == b.depthLegend && a.pointSize == b.pointSize && a.threads == b.threads;
 }
 
 void markPareto(std::vector<AccuracyRow>& rows) {
@@ -200,8 +187,8 @@ void AccuracyJob::run(const Request& request) {
             app::accuracyMethods(scene, request.view.settings);
 
         const auto t0 = Clock::now();
-        const GroundTruth truth = renderGroundTruth(
-            scene, solid(request.view.settings), request.samples, [this](double f) {
+        const GroundTruth truth =
+            renderGroundTruth(scene, request.view.settings, request.samples, [this](double f) {
                 return progress(kGroundTruthShare * f, "ground truth " + percent(f));
             });
         report->groundTruthSeconds = ms(t0, Clock::now()) / 1000.0;
@@ -209,15 +196,15 @@ void AccuracyJob::run(const Request& request) {
 
         // The same settings on several axes (the user's own method is on each of them) are
         // measured once, so those rows agree instead of differing by the timing's noise.
-        std::vector<std::size_t> distinct;                    // methods measured
-        std::vector<std::size_t> measuredAs(methods.size());  // index into `distinct`
+        std::vector<app::AccuracyMethod> measured;            // each distinct method once
+        std::vector<std::size_t> measuredAs(methods.size());  // index into `measured`
         for (std::size_t k = 0; k < methods.size(); ++k) {
-            std::size_t d = 0;
-            while (d < distinct.size() &&
-                   !sameSettings(methods[distinct[d]].settings, methods[k].settings))
-                ++d;
-            if (d == distinct.size()) distinct.push_back(k);
-            measuredAs[k] = d;
+            const auto same = [&](const app::AccuracyMethod& m) {
+                return m.settings == methods[k].settings;
+            };
+            measuredAs[k] = static_cast<std::size_t>(
+                std::find_if(measured.begin(), measured.end(), same) - measured.begin());
+            if (measuredAs[k] == measured.size()) measured.push_back(methods[k]);
         }
 
         // Round-robin like `facet accuracy`: a stretch when the viewer (or anything else) holds
@@ -225,39 +212,31 @@ void AccuracyJob::run(const Request& request) {
         // each for the error.
         Renderer renderer;
         Framebuffer frame;
-        const std::size_t count = distinct.size();
+        const std::size_t count = measured.size();
         const std::size_t rounds = static_cast<std::size_t>(request.warmup + request.frames);
         const double steps = static_cast<double>((rounds + 1) * count);
-        std::vector<std::vector<double>> times(count);
         std::vector<ImageError> errors(count);
         std::size_t step = 0;
         auto next = [&](const char* what, std::size_t d) {
             const double f = static_cast<double>(step++) / steps;
             const std::string label = std::string(what) + " " + std::to_string(d + 1) + "/" +
-                                      std::to_string(count) + " " + methods[distinct[d]].name;
+                                      std::to_string(count) + " " + measured[d].name;
             if (!progress(kGroundTruthShare + (1.0 - kGroundTruthShare) * f, label))
                 throw Cancelled{};
         };
-        for (std::size_t round = 0; round < rounds; ++round) {
-            for (std::size_t d = 0; d < count; ++d) {
-                next("timing", d);
-                const auto start = Clock::now();
-                renderer.render(scene, methods[distinct[d]].settings, frame);
-                if (round >= static_cast<std::size_t>(request.warmup))
-                    times[d].push_back(ms(start, Clock::now()));
-            }
-        }
+        const std::vector<std::vector<double>> times =
+            app::timeMethods(renderer, scene, measured, request.frames, request.warmup, frame,
+                             [&](std::size_t d) { next("timing", d); });
         for (std::size_t d = 0; d < count; ++d) {
             next("error", d);
-            renderer.render(scene, methods[distinct[d]].settings, frame);
+            renderer.render(scene, measured[d].settings, frame);
             errors[d] = measureError(frame, truth);
         }
         for (std::size_t k = 0; k < methods.size(); ++k) {
             const app::AccuracyMethod& m = methods[k];
-            app::AccuracyResult timed;
-            app::summarise(times[measuredAs[k]], timed);
-            report->rows.push_back({m.axis, m.name, m.settings, timed.medianMs, timed.minMs,
-                                    timed.maxMs, errors[measuredAs[k]], false});
+            const app::FrameTimes t = app::summarize(times[measuredAs[k]]);
+            report->rows.push_back(
+                {m.axis, m.name, m.settings, t.median, t.min, t.max, errors[measuredAs[k]], false});
         }
         markPareto(report->rows);
         std::lock_guard lock(mutex_);

@@ -53,9 +53,6 @@ bool samePicture(const AccuracyView& a, const AccuracyView& b);
 /// Same settings as far as the measured methods go: the ones a Solid render depends on.
 bool sameMethod(const RenderSettings& a, const RenderSettings& b);
 
-/// Every field of the settings equal.
-bool sameSettings(const RenderSettings& a, const RenderSettings& b);
-
 /// One method measured.
 struct AccuracyRow {
     std::string axis;

@@ -66,7 +66,7 @@ int App::frame(Clock::time_point start, bool last) {
     // The frame in hand is this one: leave the cores to the job.
     const bool skipEngine = accuracy.running() && plan.engine && !plan.twin && engineFresh &&
                             samePicture(engineView, lastEngineView) &&
-                            sameSettings(engineView.settings, lastEngineView.settings) &&
+                            engineView.settings == lastEngineView.settings &&
                             sameCompare(compare, lastEngineCompare);
     if (skipEngine) plan.engine = false;
     const auto tPanels = Clock::now();

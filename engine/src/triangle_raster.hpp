@@ -42,11 +42,6 @@ struct CoverageSetup {
 /// Result of snapping: which way the triangle faces on screen.
 enum class Facing { Degenerate, Front, Back };
 
-/// Snaps a continuous pixel-space coordinate to the sub-pixel grid.
-inline std::int64_t snap(double v) {
-    return std::llround(v * static_cast<double>(kSubPixel));
-}
-
 /// Snapping to a grid of 1/2^bits px, results in 1/256 px units: v·2^bits is exact in double, so
 /// the rounding is the b-bit rasterizer's, and the product with `step` is exact in integers.
 struct SnapGrid {
@@ -58,7 +53,7 @@ struct SnapGrid {
         const int b = std::clamp(bits, 1, kSubPixelBits);
         return {static_cast<double>(std::int64_t{1} << b), std::int64_t{1} << (kSubPixelBits - b)};
     }
-    /// `v` snapped to this grid, in 1/256 px units; snap(v) at 8 bits.
+    /// `v` snapped to this grid, in 1/256 px units.
     std::int64_t operator()(double v) const { return std::llround(v * scale) * step; }
 };
 

@@ -60,6 +60,9 @@ struct RenderSettings {
     /// Samples per pixel axis, 1…4 (clamped): the frame is rendered at N×N the size and each
     /// N×N block averaged (supersampling); Solid mode only, lines and points stay one sample.
     int supersample = 1;
+
+    /// Every field equal (the viewer's "did anything change" and "same method" checks).
+    bool operator==(const RenderSettings&) const = default;
 };
 
 /// Parses names as the CLI spells them ("solid", "painter", "affine"...); nullopt if unknown.
