@@ -25,6 +25,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "coverage/coverage.hpp"
 #include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/lighting.hpp"
@@ -32,10 +33,9 @@
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
 #include "facet/texture.hpp"
-#include "fragment.hpp"
-#include "primitives.hpp"
-#include "triangle_raster.hpp"
-#include "triangle_setup.hpp"
+#include "frontend/front_end.hpp"
+#include "shading/fragment.hpp"
+#include "shading/scalar_loop.hpp"
 
 namespace {
 

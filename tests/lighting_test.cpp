@@ -15,6 +15,7 @@
 
 #include "facet/lighting.hpp"
 #include "facet/scene.hpp"
+#include "shading/fast_lighting.hpp"
 
 namespace {
 

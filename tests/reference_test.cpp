@@ -24,6 +24,7 @@
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 #include "facet/texture.hpp"
+#include "reference/samplers.hpp"
 
 namespace {
 

@@ -17,12 +17,12 @@
 #include <vector>
 
 #include "accuracy/sweep_subpixel.hpp"
+#include "coverage/coverage.hpp"
 #include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
-#include "triangle_raster.hpp"
 
 namespace facet {
 namespace {

@@ -29,6 +29,8 @@
 
 #include "facet/framebuffer.hpp"
 #include "facet/texture.hpp"
+#include "reference/samplers.hpp"
+#include "shading/samplers.hpp"
 
 namespace facet {
 namespace {

@@ -14,12 +14,4 @@ namespace facet {
 /// too small to hold it (under 64×32) or the range is not finite.
 void drawDepthLegend(Framebuffer& frame, float depthNear, float depthFar);
 
-/// Draws `text` with its top-left corner at (x, y), `scale` frame pixels per font pixel, in
-/// `rgba`; characters the font lacks are left blank and pixels outside the frame are skipped.
-void drawText(Framebuffer& frame, int x, int y, std::string_view text, int scale,
-              std::uint32_t rgba);
-
-/// Width in pixels drawText() uses for `text` at `scale`.
-int textWidth(std::string_view text, int scale);
-
 }  // namespace facet

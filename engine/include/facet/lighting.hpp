@@ -3,8 +3,9 @@
 //
 //     I = Ia·Ka + Id · ( Kd · max(0, n·l) + Ks · max(0, n·h)^s )
 //
-// twice: a plain double version for the reference path, and an inline float version for the
-// fast path's per-vertex (Gouraud) and per-pixel (Phong) shading.
+// twice: a plain double version for the reference path (declared here), and an inline float
+// version for the fast path's per-vertex (Gouraud) and per-pixel (Phong) shading (internal:
+// shading/fast_lighting.hpp), fed by the FastLighting constants below.
 //
 // Choices the formula leaves open, identical in both versions:
 //  - An undefined direction is the zero vector, never NaN: l when the point is at the light (or a
@@ -70,33 +71,5 @@ struct FastLighting {
 
 /// Folds the parameters for the float path.
 FastLighting prepareLighting(const LightingParams& params);
-
-namespace detail {
-/// v / |v|, or zero where |v| = 0: an undefined direction must contribute nothing, not NaN.
-inline glm::vec3 normalizeOrZero(const glm::vec3& v) {
-    const float length2 = glm::dot(v, v);
-    return length2 > 0.0f ? v * (1.0f / std::sqrt(length2)) : glm::vec3(0.0f);
-}
-}  // namespace detail
-
-/// I at point `p` with normal `n` (unit, or zero for none), seen from `eye`. Fast version: same
-/// rules as the double one, agreeing to float rounding.
-inline float lightIntensity(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
-                            const FastLighting& lighting) {
-    // With w ≥ 0, xyz − w·p is w·(light point − p) for a point light and xyz for a directional
-    // one: one expression, no division, no branch on the light's kind.
-    const glm::vec3 l = detail::normalizeOrZero(glm::vec3(lighting.light) - lighting.light.w * p);
-    const glm::vec3 v = detail::normalizeOrZero(eye - p);
-    const glm::vec3 h = detail::normalizeOrZero(l + v);
-    const float nl = glm::dot(n, l);
-    const float nh = std::clamp(glm::dot(n, h), 0.0f, 1.0f);
-    const float lit = lighting.diffuse * nl + lighting.specular * std::pow(nh, lighting.shininess);
-    return lighting.ambientTerm + (nl > 0.0f ? lit : 0.0f);
-}
-
-/// The lit colour clamp(rgb · I, 0, 1).
-inline glm::vec3 shade(const glm::vec3& rgb, float intensity) {
-    return glm::clamp(rgb * intensity, 0.0f, 1.0f);
-}
 
 }  // namespace facet

@@ -6,9 +6,8 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <vector>
-
 #include <string_view>
+#include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -22,9 +21,6 @@
 namespace facet {
 
 class Texture;
-namespace detail {
-class TileRenderer;
-}
 
 /// Geometry already in clip space (see camera.hpp), as one draw consumes it. Only the streams
 /// the settings need are read: colours for every shader but Depth (and Texture without
@@ -88,29 +84,8 @@ class Renderer {
                        int height, std::vector<std::uint16_t>& counts);
 
   private:
-    /// render() for one camera: the scene's, or the supersampled image's.
-    RenderStats renderView(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                           Framebuffer& frame);
-
-    /// The normals display: a red segment per vertex normal, after the main pass.
-    void drawNormals(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                     float nearPlane, Framebuffer& frame, RenderStats& stats);
-
-    std::vector<glm::vec4> clip_;
-    std::vector<glm::vec3> litColors_;
-    std::vector<glm::vec3> normals_;
-    std::uint64_t normalsFingerprint_ = 0;  // of the mesh normals_ belong to
-    std::vector<glm::dvec4> normalSums_;
-    std::vector<glm::vec4> normalClip_;  // the normals display: two clip points per vertex
-    /// The wireframe's unique edges, rebuilt when the indices' fingerprint changes.
-    void updateEdges(std::span<const std::uint32_t> indices);
-
-    std::vector<std::uint32_t> edges_;
-    std::vector<std::uint64_t> edgeKeys_;
-    std::uint64_t edgesFingerprint_ = 0;
-    std::vector<std::uint32_t> normalEdges_;
-    std::unique_ptr<detail::TileRenderer> tiles_;  // bins kept between frames
-    Framebuffer supersampled_;                     // the N×N-size image of a supersampled frame
+    struct Impl;  // the scratch buffers and caches kept between frames (pipeline/renderer.cpp)
+    std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace facet

@@ -1,0 +1,57 @@
+#pragma once
+// Sort-middle parallel rasterization. The draw's triangles are taken in batches; in each batch
+// the front end runs on every thread over a contiguous slice of the triangles and bins what it
+// produces (coverage setup + planes) into 64×64 pixel tiles; then each tile is rasterized by one
+// thread, visiting the slices in order. So every pixel sees its fragments in submission order,
+// exactly as one thread would draw them: the image does not depend on the thread count, and no
+// lock guards the framebuffer because no two threads ever own the same tile.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "frontend/front_end.hpp"
+
+namespace facet::detail {
+
+/// Side of a tile in pixels: a 64×64 tile's colour and depth (32 KiB) stay in L1/L2 while its
+/// triangles are drawn.
+inline constexpr int kTileSize = 64;
+
+/// Worker threads for a draw: `requested` when positive, else every core.
+int resolveThreads(int requested);
+
+/// Runs the triangle pipeline on several threads; keeps its bins between draws so a steady
+/// frame allocates nothing.
+class TileRenderer {
+  public:
+    /// Draws triangles like drawTriangles() over the whole draw, rasterizing with `rasterize`
+    /// (whose `context` must be safe to share between threads for disjoint tiles), on a grid of
+    /// 1/2^subPixelBits px. Adds the front end's counters and the fragments to `stats`.
+    void draw(const DrawInput& in, const VaryingLayout& layout, bool cull, int width, int height,
+              RasterizeFn rasterize, void* context, int threads, int subPixelBits,
+              RenderStats& stats);
+
+  private:
+    /// A triangle (or guard-band part) ready to rasterize.
+    struct Record {
+        CoverageSetup setup;
+        Planes planes;
+    };
+    /// What one thread's slice of a batch produced: records, and per tile their indices.
+    struct Slice {
+        std::vector<Record> records;
+        std::vector<std::vector<std::uint32_t>> bins;  // one list per tile
+        std::vector<std::uint32_t> touched;            // tiles with a non-empty list
+        int tilesX = 0;
+        RenderStats stats;
+    };
+    static std::size_t binTriangle(void* slice, const CoverageSetup& setup, const Planes& planes);
+    std::size_t rasterizeTile(int tile, int tilesX, int width, int height, RasterizeFn rasterize,
+                              void* context, std::size_t slices) const;
+
+    std::vector<Slice> slices_;
+    std::vector<std::size_t> fragments_;  // per thread
+};
+
+}  // namespace facet::detail

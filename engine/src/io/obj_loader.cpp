@@ -1,0 +1,273 @@
+// The .obj reader (conventions §3) on top of tinyobjloader.
+//
+// tinyobjloader is lenient where this project wants errors: it reads "nan" or "abc" as 0, accepts
+// out-of-range indices with a warning (and its ear-clipper then reads past its arrays for
+// polygons of five or more corners) and reports most problems without a line. So the text is
+// first checked here, line by line; tinyobjloader then parses it without triangulating, and the
+// polygons are fanned here, as OFF polygons are, after every index has been checked.
+//
+// A map_Kd texture is resolved relative to the .obj's folder and kept even when that file is
+// missing: the texture loader then reports the path it could not open, which tells the user more
+// than a texture that silently disappeared.
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include <tiny_obj_loader.h>
+
+#include "facet/mesh_io.hpp"
+#include "io/text_scan.hpp"
+
+namespace facet {
+
+namespace {
+
+// tinyobjloader stores a face's corner count in an unsigned char.
+constexpr std::size_t maxFaceCorners = 255;
+
+// What the line check learned: the line of every face, in the order tinyobjloader lists faces.
+struct ObjLines {
+    std::vector<int> faceLines;
+};
+
+// Checks the numbers of a `v` or `vt` line (tokens after the keyword).
+std::optional<std::string> checkNumbers(const std::vector<std::string_view>& tokens) {
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+        float v = 0.0f;
+        switch (text::parseReal(tokens[i], v)) {
+            case text::NumberStatus::ok:
+                break;
+            case text::NumberStatus::notANumber:
+                return "expected a number, got " + text::quoted(tokens[i]);
+            case text::NumberStatus::nonFinite:
+                return "non-finite number " + text::quoted(tokens[i]) +
+                       " (coordinates must be finite)";
+        }
+    }
+    return std::nullopt;
+}
+
+// Checks one face corner: "v", "v/vt", "v//vn" or "v/vt/vn" with non-zero integers.
+std::optional<std::string> checkCorner(std::string_view corner) {
+    const auto bad = [&] {
+        return "expected a face corner like 7, 7/3, 7//2 or 7/3/2, got " + text::quoted(corner);
+    };
+    std::size_t part = 0;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t slash = corner.find('/', start);
+        const std::string_view field = corner.substr(start, slash - start);
+        // Only the texture slot of "v//vn" may be empty.
+        if (!(field.empty() && part == 1 && slash != std::string_view::npos)) {
+            std::int64_t index = 0;
+            if (!text::parseInt(field, index)) return bad();
+            if (index == 0) {
+                return "index 0 in " + text::quoted(corner) + ": OBJ indices start at 1";
+            }
+        }
+        if (slash == std::string_view::npos) break;
+        if (++part > 2) return bad();
+        start = slash + 1;
+    }
+    return std::nullopt;
+}
+
+// The checks tinyobjloader does not make, with line numbers.
+Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
+    ObjLines result;
+    text::LineReader lines(text::skipBom(text));
+    std::vector<std::string_view> tokens;
+    std::string_view line;
+    while (lines.next(line)) {
+        const int number = lines.lineNumber();
+        const auto fail = [&](std::string message) {
+            return Error{{path, number}, std::move(message)};
+        };
+        // tinyobjloader reads face lines whole, so a comment there is an error (below); for the
+        // other lines it is harmless to drop it.
+        text::splitTokens(line, tokens);
+        if (tokens.empty() || tokens[0].front() == '#') continue;
+        const std::string_view keyword = tokens[0];
+        if (keyword == "v" || keyword == "vt") {
+            text::splitTokens(text::stripComment(line), tokens);
+            const std::size_t need = keyword == "v" ? 3 : 1;
+            if (tokens.size() - 1 < need) {
+                return fail(keyword == "v" ? "a vertex needs 3 numbers (x y z), got " +
+                                                 std::to_string(tokens.size() - 1)
+                                           : std::string("a texture coordinate needs u [v]"));
+            }
+            if (auto message = checkNumbers(tokens)) return fail(*message);
+        } else if (keyword == "f") {
+            const std::size_t corners = tokens.size() - 1;
+            if (corners < 3) {
+                return fail("a face needs at least 3 vertices, got " + std::to_string(corners));
+            }
+            if (corners > maxFaceCorners) {
+                return fail("a face has " + std::to_string(corners) + " vertices; at most " +
+                            std::to_string(maxFaceCorners) + " are supported");
+            }
+            for (std::size_t i = 1; i < tokens.size(); ++i) {
+                if (auto message = checkCorner(tokens[i])) return fail(*message);
+            }
+            result.faceLines.push_back(number);
+        }
+    }
+    return result;
+}
+
+// The line number in a tinyobjloader message ("... line 12.)"), 0 if none.
+int lineInMessage(const std::string& message) {
+    const std::size_t at = message.find("line ");
+    if (at == std::string::npos) return 0;
+    int line = 0;
+    for (std::size_t i = at + 5; i < message.size() && message[i] >= '0' && message[i] <= '9';
+         ++i) {
+        line = line * 10 + (message[i] - '0');
+    }
+    return line;
+}
+
+std::string firstLine(const std::string& message) {
+    return message.substr(0, message.find('\n'));
+}
+
+// The map_Kd of the first material a face uses, else of any material, else empty.
+std::string diffuseTexture(const tinyobj::ObjReader& reader) {
+    const auto& materials = reader.GetMaterials();
+    for (const auto& shape : reader.GetShapes()) {
+        for (const int id : shape.mesh.material_ids) {
+            if (id >= 0 && static_cast<std::size_t>(id) < materials.size() &&
+                !materials[static_cast<std::size_t>(id)].diffuse_texname.empty()) {
+                return materials[static_cast<std::size_t>(id)].diffuse_texname;
+            }
+        }
+    }
+    for (const auto& m : materials) {
+        if (!m.diffuse_texname.empty()) return m.diffuse_texname;
+    }
+    return {};
+}
+
+}  // namespace
+
+Result<Mesh> loadObj(const std::string& path) {
+    auto text = text::readFile(path);
+    if (!text) return text.error();
+    auto lines = checkObjText(*text, path);
+    if (!lines) return lines.error();
+    const std::vector<int>& faceLines = lines->faceLines;
+    text->clear();
+    text->shrink_to_fit();
+
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = false;   // fanned below, after the indices are known to be valid
+    config.vertex_color = false;  // so that attrib.colors stays empty when the file has none
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(path, config)) {
+        const std::string& message = reader.Error();
+        return Error{{path, lineInMessage(message)}, "cannot parse OBJ: " + firstLine(message)};
+    }
+
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    const auto positionCount = static_cast<std::int64_t>(attrib.vertices.size() / 3);
+    const auto texcoordCount = static_cast<std::int64_t>(attrib.texcoords.size() / 2);
+    const bool hasColors = !attrib.colors.empty() && attrib.colors.size() == attrib.vertices.size();
+
+    std::size_t faceCount = 0;
+    std::size_t cornerCount = 0;
+    for (const auto& shape : reader.GetShapes()) {
+        faceCount += shape.mesh.num_face_vertices.size();
+        cornerCount += shape.mesh.indices.size();
+    }
+    if (faceCount == 0) return Error{{path, 0}, "no faces: the file has no triangles to draw"};
+    // The line check and tinyobjloader agree on what a face line is; if they ever did not, the
+    // error below would point at the wrong line, so it names none instead.
+    const bool linesKnown = faceLines.size() == faceCount;
+
+    Mesh mesh;
+    mesh.positions.reserve(cornerCount / 2);
+    mesh.uvs.reserve(texcoordCount > 0 ? cornerCount / 2 : 0);
+    mesh.indices.reserve(3 * cornerCount);
+    bool anyUv = false;
+    // One engine vertex per distinct (position, texcoord) pair; normals are not stored yet.
+    std::unordered_map<std::uint64_t, std::uint32_t> merged;
+    merged.reserve(cornerCount);
+    std::vector<std::uint32_t> corners;
+    std::size_t face = 0;
+    for (const auto& shape : reader.GetShapes()) {
+        std::size_t offset = 0;
+        for (const unsigned char n : shape.mesh.num_face_vertices) {
+            const int line = linesKnown ? faceLines[face] : 0;
+            corners.clear();
+            for (std::size_t k = 0; k < n; ++k) {
+                const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
+                const std::int64_t v = idx.vertex_index;
+                const std::int64_t vt = idx.texcoord_index;
+                if (v < 0 || v >= positionCount) {
+                    return Error{{path, line},
+                                 "vertex index out of range: the face refers to vertex " +
+                                     std::to_string(v + 1) + " but the file has " +
+                                     std::to_string(positionCount) + " (1 to " +
+                                     std::to_string(positionCount) + ")"};
+                }
+                if (vt < -1 || vt >= texcoordCount) {
+                    return Error{{path, line},
+                                 "texture coordinate index out of range: the face refers to vt " +
+                                     std::to_string(vt + 1) + " but the file has " +
+                                     std::to_string(texcoordCount)};
+                }
+                const std::uint64_t key =
+                    (static_cast<std::uint64_t>(v) << 32) | static_cast<std::uint64_t>(vt + 1);
+                const auto [it, inserted] =
+                    merged.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+                if (inserted) {
+                    const auto vi = static_cast<std::size_t>(v);
+                    mesh.positions.emplace_back(attrib.vertices[3 * vi],
+                                                attrib.vertices[3 * vi + 1],
+                                                attrib.vertices[3 * vi + 2]);
+                    if (hasColors) {
+                        mesh.colors.emplace_back(attrib.colors[3 * vi], attrib.colors[3 * vi + 1],
+                                                 attrib.colors[3 * vi + 2]);
+                    }
+                    if (texcoordCount > 0) {
+                        // OBJ puts v = 0 at the image bottom, the engine at the top. A corner
+                        // without vt in a file that has some gets (0, 0).
+                        glm::vec2 uv(0.0f);
+                        if (vt >= 0) {
+                            const auto ti = static_cast<std::size_t>(vt);
+                            uv = {attrib.texcoords[2 * ti], 1.0f - attrib.texcoords[2 * ti + 1]};
+                            anyUv = true;
+                        }
+                        mesh.uvs.push_back(uv);
+                    }
+                }
+                corners.push_back(it->second);
+            }
+            for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+                mesh.indices.insert(mesh.indices.end(), {corners[0], corners[k], corners[k + 1]});
+            }
+            offset += n;
+            ++face;
+        }
+    }
+    if (!anyUv) mesh.uvs.clear();
+
+    const std::string texture = diffuseTexture(reader);
+    if (!texture.empty()) {
+        std::string named = texture;
+        std::replace(named.begin(), named.end(), '\\', '/');  // written on Windows
+        const std::filesystem::path file(named);
+        mesh.texturePath = file.is_absolute()
+                               ? file.string()
+                               : (std::filesystem::path(path).parent_path() / file).string();
+    }
+    return mesh;
+}
+
+}  // namespace facet

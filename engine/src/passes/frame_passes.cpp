@@ -1,0 +1,54 @@
+// Clear and depth colours (see frame_passes.hpp).
+
+#include "passes/frame_passes.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+
+#include <glm/vec3.hpp>
+
+#include "facet/colormap.hpp"
+#include "shading/fragment.hpp"
+
+namespace facet::detail {
+namespace {
+
+/// Pixels per thread below which whole-frame passes stay on one thread.
+constexpr std::ptrdiff_t kParallelPixels = 1 << 16;
+
+}  // namespace
+
+// Split by rows over the threads: a 4K frame is 64 MB of stores.
+void clearFrame(Framebuffer& fb, std::uint32_t rgba, int threads) {
+    const auto n = static_cast<std::ptrdiff_t>(fb.color.size());
+    const std::ptrdiff_t parts =
+        std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, n / kParallelPixels));
+#pragma omp parallel for num_threads(static_cast <int>(parts)) if (parts > 1)
+    for (std::ptrdiff_t p = 0; p < parts; ++p) {
+        const std::ptrdiff_t b = n * p / parts, e = n * (p + 1) / parts;
+        std::fill(fb.color.begin() + b, fb.color.begin() + e, rgba);
+        std::fill(fb.depth.begin() + b, fb.depth.begin() + e, kEmptyDepth);
+    }
+}
+
+void resolveDepthColors(Framebuffer& fb, RenderStats& stats, int threads) {
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (const float d : fb.depth)
+        if (d != kEmptyDepth) {
+            lo = std::min(lo, d);
+            hi = std::max(hi, d);
+        }
+    if (lo > hi) return;
+    stats.depthNear = lo;
+    stats.depthFar = hi;
+    const double range = hi > lo ? static_cast<double>(hi) - lo : 1.0;
+    const auto n = static_cast<std::ptrdiff_t>(fb.depth.size());
+#pragma omp parallel for num_threads(threads) if (n > kParallelPixels)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+        if (fb.depth[i] != kEmptyDepth)
+            fb.color[i] =
+                packColor(glm::vec3(viridis((fb.depth[i] - static_cast<double>(lo)) / range)));
+}
+
+}  // namespace facet::detail

@@ -1,0 +1,19 @@
+#pragma once
+// The whole-frame passes around a draw: the clear before it and the depth shader's colouring
+// after it. Both split the frame into row bands over the threads.
+
+#include <cstdint>
+
+#include "facet/framebuffer.hpp"
+#include "facet/render.hpp"
+
+namespace facet::detail {
+
+/// Fills colour with `rgba` and depth with kEmptyDepth.
+void clearFrame(Framebuffer& fb, std::uint32_t rgba, int threads);
+
+/// The depth shader's second pass: the visible depth range mapped through viridis (near dark,
+/// far bright); records the range in `stats`.
+void resolveDepthColors(Framebuffer& fb, RenderStats& stats, int threads);
+
+}  // namespace facet::detail

@@ -1,0 +1,217 @@
+// The fast path's frame, stage by stage: clear (passes/), vertex stage (vertex_stage.hpp), the
+// draw (the variant picked once, variants.hpp; then the front end, binning, coverage and the
+// pixel loops for triangles, or lines and points), and the passes after it (depth colours,
+// normals, legend, supersample resolve). The per-pixel code has no branch on the settings, no
+// virtual call and no allocation.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+
+#include "binning/tiles.hpp"
+#include "facet/camera.hpp"
+#include "facet/legend.hpp"
+#include "facet/render.hpp"
+#include "lines/lines_points.hpp"
+#include "passes/frame_passes.hpp"
+#include "passes/normals_overlay.hpp"
+#include "passes/supersample.hpp"
+#include "pipeline/variants.hpp"
+#include "pipeline/vertex_stage.hpp"
+#include "scene/fingerprint.hpp"
+#include "shading/scalar_loop.hpp"
+
+namespace facet {
+
+using namespace detail;
+
+/// What a Renderer keeps between frames, so a steady frame allocates nothing.
+struct Renderer::Impl {
+    VertexStage vertices;
+    /// The wireframe's unique edges, rebuilt when the indices' fingerprint changes.
+    std::vector<std::uint32_t> edges;
+    std::vector<std::uint64_t> edgeKeys;
+    std::uint64_t edgesFingerprint = 0;
+    NormalsOverlay normalsOverlay;
+    TileRenderer tiles;        // bins kept between frames
+    Framebuffer supersampled;  // the N×N-size image of a supersampled frame
+
+    void updateEdges(std::span<const std::uint32_t> indices) {
+        // The edge list is rebuilt (a sort) only when the indices change.
+        const std::uint64_t h = fingerprint(indices);
+        if (h == edgesFingerprint && !edges.empty()) return;
+        uniqueEdges(indices, edges, edgeKeys);
+        edgesFingerprint = h;
+    }
+
+    RenderStats renderView(Renderer& renderer, const Scene& scene, const Camera& camera,
+                           const RenderSettings& settings, Framebuffer& frame);
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh) {
+    if (settings.nearPlane > 0.0) return settings.nearPlane;
+    const double diagonal = computeBounds(mesh).diagonal();
+    return diagonal > 0.0 ? 1e-3 * diagonal : 1e-3;
+}
+
+namespace {
+
+/// Counts coverage instead of shading (fill-rule tests and overdraw views).
+struct CoverageCounts {
+    std::uint16_t* counts;
+    int width;
+};
+
+std::size_t countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
+    const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
+    std::size_t covered = 0;
+    forEachCovered(setup, [&](int x, int y) {
+        ++covered;
+        std::uint16_t& n =
+            c.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) +
+                     static_cast<std::size_t>(x)];
+        if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+    });
+    return covered;
+}
+
+/// Bytes per vertex the draw reads or derives, for --stats.
+std::size_t vertexBytes(const RenderSettings& s, const Mesh& mesh, const VariantKey& key) {
+    std::size_t bytes = sizeof(glm::vec3) + sizeof(glm::vec4);  // position, clip position
+    if (key.layout.color && mesh.hasColors()) bytes += sizeof(glm::vec3);
+    if (key.layout.color && s.lighting == Lighting::Gouraud) bytes += 2 * sizeof(glm::vec3);
+    if (key.layout.phong || s.showNormals) bytes += sizeof(glm::vec3);  // normals
+    if (key.layout.uv && mesh.hasUvs()) bytes += sizeof(glm::vec2);
+    return bytes;
+}
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point& t) {
+    const Clock::time_point now = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+    t = now;
+    return ms;
+}
+
+int clampedSubPixelBits(const RenderSettings& settings) {
+    return std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
+}
+
+}  // namespace
+
+RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& settings,
+                           Framebuffer& frame) {
+    RenderStats stats;
+    if (frame.width <= 0 || frame.height <= 0) return stats;
+    const VariantKey key = variantKey(settings, input);
+    stats.varyings = 1 + key.layout.count();
+    stats.varyingNames = key.layout.names();
+    const DrawConstants constants{input.texture ? input.texture : &whiteTexture(), input.lighting,
+                                  input.eye, glm::vec3(1.0f)};
+    const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
+    const int threads = resolveThreads(settings.threads);
+    dispatch(key, [&](auto variant) {
+        using V = decltype(variant);
+        switch (settings.mode) {
+            case DrawMode::Solid: {
+                RasterContext ctx{&frame, &constants, subdivision};
+                impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
+                                  frame.height, &rasterizeTriangle<V>, &ctx, threads,
+                                  clampedSubPixelBits(settings), stats);
+                break;
+            }
+            case DrawMode::Wireframe:
+                impl_->updateEdges(input.indices);
+                drawLines<V>(input, impl_->edges, frame, constants, stats);
+                break;
+            case DrawMode::Vertices:
+                drawPoints<V>(input, settings.pointSize, frame, constants, stats);
+                break;
+        }
+    });
+    if (settings.shader == ShaderKind::Depth) resolveDepthColors(frame, stats, threads);
+    return stats;
+}
+
+void Renderer::countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
+                             int height, std::vector<std::uint16_t>& counts) {
+    counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+    if (width <= 0 || height <= 0) return;
+    RenderStats stats;
+    CoverageCounts ctx{counts.data(), width};
+    impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
+                      &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
+}
+
+RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
+                             Framebuffer& frame) {
+    const int n = std::clamp(settings.supersample, 1, kMaxSupersample);
+    if (n == 1 || settings.mode != DrawMode::Solid)
+        return impl_->renderView(*this, scene, scene.camera, settings, frame);
+    // The legend is drawn on the final frame, at its size, so it stays legible.
+    RenderSettings big = settings;
+    big.depthLegend = false;
+    RenderStats stats = impl_->renderView(*this, scene, supersampledCamera(scene.camera, n), big,
+                                          impl_->supersampled);
+    Clock::time_point t = Clock::now();
+    resolveSupersampled(impl_->supersampled, n, frame, resolveThreads(settings.threads));
+    if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
+        drawDepthLegend(frame, stats.depthNear, stats.depthFar);
+    stats.postMs += msSince(t);
+    return stats;
+}
+
+RenderStats Renderer::Impl::renderView(Renderer& renderer, const Scene& scene, const Camera& cam,
+                                       const RenderSettings& settings, Framebuffer& frame) {
+    // Clear.
+    Clock::time_point t = Clock::now();
+    frame.resize(cam.width, cam.height);
+    const int threads = resolveThreads(settings.threads);
+    clearFrame(frame, rgbaFromHex(settings.background), threads);
+    const double clearMs = msSince(t);
+
+    // Vertex stage: only the streams the settings need.
+    const Mesh& mesh = scene.mesh;
+    DrawInput input{.clip = vertices.transform(mesh, clipFromWorld(cam), threads),
+                    .colors = mesh.colors,
+                    .indices = mesh.indices,
+                    .nearPlane = static_cast<float>(resolveNearPlane(settings, mesh)),
+                    .texture = scene.texture.get(),
+                    .lighting = prepareLighting(lightingParams(scene)),
+                    .eye = glm::vec3(cam.eye)};
+    // Lighting only changes colour: a depth image or a bare texel needs no normals.
+    const bool lit = settings.lighting != Lighting::Off && usesColor(settings);
+    std::span<const glm::vec3> vertexNormals;
+    if (lit || settings.showNormals) vertexNormals = vertices.normals(mesh);
+    if (lit && settings.lighting == Lighting::Gouraud)
+        input.colors = vertices.gouraud(mesh, input.eye, input.lighting, threads);
+    if (lit && settings.lighting == Lighting::Phong) {
+        input.normals = vertexNormals;
+        input.positions = mesh.positions;
+    }
+    if (settings.shader == ShaderKind::Texture) input.uvs = mesh.uvs;
+    const double vertexMs = msSince(t);
+
+    // The draw, then the passes after it.
+    RenderStats stats = renderer.draw(input, settings, frame);
+    stats.clearMs = clearMs;
+    stats.vertexMs = vertexMs;
+    stats.rasterMs = msSince(t);
+    stats.vertexBytes = vertexBytes(settings, mesh, variantKey(settings, input));
+    if (settings.showNormals)
+        normalsOverlay.draw(mesh, vertexNormals, cam, settings, input.nearPlane, frame, stats);
+    // Last, so neither the normals nor the depth colours cover it.
+    if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
+        drawDepthLegend(frame, stats.depthNear, stats.depthFar);
+    stats.postMs = msSince(t);
+    return stats;
+}
+
+}  // namespace facet

@@ -1,0 +1,86 @@
+// The reference path's entry point from a scene: the vertex streams (rules 3, 10, 14) built in
+// double from the mesh, then draw() (raster.cpp); and the 8-bit rounding of rule 9.
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "facet/framebuffer.hpp"
+#include "facet/lighting.hpp"
+#include "facet/normals.hpp"
+#include "facet/reference.hpp"
+#include "facet/render.hpp"
+
+namespace facet::reference {
+
+std::vector<std::uint32_t> Image::toRgba() const {
+    auto channel = [](double c) -> std::uint32_t {
+        if (std::isnan(c)) return 0;
+        return static_cast<std::uint32_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
+    };
+    std::vector<std::uint32_t> out(color.size());
+    for (std::size_t i = 0; i < color.size(); ++i) {
+        out[i] = packRgba(channel(color[i].r), channel(color[i].g), channel(color[i].b));
+    }
+    return out;
+}
+
+std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings& settings) {
+    const std::vector<glm::vec3> normals = computeVertexNormals(scene.mesh);
+    const double length = settings.normalLength > 0.0
+                              ? settings.normalLength
+                              : static_cast<double>(normalDisplayLength(scene.mesh));
+    std::vector<glm::dvec4> ends;
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+        if (normals[i] == glm::vec3(0.0f)) continue;
+        const glm::dvec3 p(scene.mesh.positions[i]);
+        ends.push_back(projectPoint(scene.camera, p));
+        ends.push_back(projectPoint(scene.camera, p + length * glm::dvec3(normals[i])));
+    }
+    return ends;
+}
+
+Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
+    const Mesh& mesh = scene.mesh;
+    const std::size_t n = mesh.positions.size();
+    const std::vector<glm::dvec4> clip = projectScene(scene);
+    std::vector<glm::dvec3> positions(mesh.positions.begin(), mesh.positions.end());
+    std::vector<glm::dvec3> colors(mesh.colors.begin(), mesh.colors.end());
+    colors.resize(n, glm::dvec3(1.0));  // rule 3: white when there are none
+    const std::vector<glm::dvec2> uvs(mesh.uvs.begin(), mesh.uvs.end());
+    // Normals only when something reads them (Phong, Gouraud, the normals display).
+    std::vector<glm::dvec3> normals;
+    if (settings.lighting != Lighting::Off || settings.showNormals) {
+        const std::vector<glm::vec3> computed = computeVertexNormals(mesh);
+        normals.assign(computed.begin(), computed.end());
+    }
+    const LightingParams params = lightingParams(scene);
+    if (settings.lighting == Lighting::Gouraud) {
+        // Conventions §6, per vertex: colour = clamp(rgb · I), I from the formula in double.
+        for (std::size_t i = 0; i < n; ++i) {
+            const double intensity =
+                lightIntensity(positions[i], normals[i], scene.camera.eye, params);
+            colors[i] = facet::shade(colors[i], intensity);
+        }
+    }
+    std::vector<glm::dvec4> segments;
+    if (settings.showNormals) segments = projectNormals(scene, settings);
+
+    Input input;
+    input.clip = clip;
+    input.colors = colors;
+    input.uvs = uvs;
+    input.normals = normals;
+    input.positions = positions;
+    input.indices = mesh.indices;
+    input.normalSegments = segments;
+    input.nearPlane = resolveNearPlane(settings, mesh);
+    input.texture = scene.texture.get();
+    input.lighting = params;
+    input.eye = scene.camera.eye;
+    return draw(input, settings, scene.camera.width, scene.camera.height, progress);
+}
+
+}  // namespace facet::reference

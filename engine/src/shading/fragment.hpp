@@ -1,0 +1,113 @@
+#pragma once
+// The fragment stage of the fast path: what colour a fragment gets and how it is written.
+// A pipeline variant (shader, interpolation, varyings, filter, combine) is a type, so every
+// branch on the settings below is resolved at compile time and the per-pixel code is straight.
+
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "facet/framebuffer.hpp"
+#include "facet/settings.hpp"
+#include "frontend/fetch.hpp"
+#include "shading/fast_lighting.hpp"
+#include "shading/samplers.hpp"
+
+namespace facet::detail {
+
+/// One pipeline variant as compile-time constants.
+template <ShaderKind S, Interp I, bool Color, bool Uv, bool Phong, TextureFilter F, bool Combine>
+struct Variant {
+    static constexpr ShaderKind kShader = S;
+    static constexpr Interp kInterp = I;
+    static constexpr VaryingLayout kLayout{Color, Uv, Phong};
+    static constexpr int kCount = kLayout.count();
+    static constexpr TextureFilter kFilter = F;
+    static constexpr bool kCombine = Combine;
+    /// Only trilinear filtering needs the screen-space derivatives of (u, v).
+    static constexpr bool kDerivatives = S == ShaderKind::Texture && F == TextureFilter::Trilinear;
+};
+
+/// The 1×1 white texture a draw samples when it has none (neutral under "combine").
+inline const Texture& whiteTexture() {
+    static const Texture white;
+    return white;
+}
+
+/// What every fragment of a draw shares.
+struct DrawConstants {
+    const Texture* texture = nullptr;  ///< never null inside the stage (white when none)
+    FastLighting lighting;
+    glm::vec3 eye{0.0f};
+    glm::vec3 baseColor{1.0f};  ///< the colour when the layout has none (white; red for normals)
+};
+
+/// What a variant's triangle rasterizer needs besides the triangle; shared, read-only, by the
+/// threads that rasterize disjoint tiles.
+struct RasterContext {
+    Framebuffer* fb;
+    const DrawConstants* constants;
+    int subdivision;  ///< N of Interp::Subdivided
+};
+
+/// Rounds a colour to 8 bits per channel as the conventions say; NaN becomes 0.
+inline std::uint32_t toByte(float c) {
+    const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+    return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
+}
+inline std::uint32_t packColor(const glm::vec3& c) {
+    return packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
+}
+
+/// True when the shader tests and writes depth (LESS).
+constexpr bool depthTested(ShaderKind s) {
+    return s != ShaderKind::Simple;
+}
+
+/// The depth test alone, before any shading is paid for (early depth): same result as testing
+/// after shading, since shading has no side effects.
+template <ShaderKind S>
+inline bool passesDepth(const Framebuffer& fb, std::size_t i, float depth) {
+    if constexpr (depthTested(S)) return depth < fb.depth[i];
+    return true;
+}
+
+/// Stores a fragment that passed passesDepth().
+template <ShaderKind S>
+inline void storeFragment(Framebuffer& fb, std::size_t i, float depth, const glm::vec3& color) {
+    if constexpr (depthTested(S)) fb.depth[i] = depth;
+    if constexpr (S != ShaderKind::Depth) fb.color[i] = packColor(color);
+}
+
+/// A texel through the variant's filter; `lod` matters for trilinear only.
+template <TextureFilter F>
+inline glm::vec3 sampleTexture(const Texture& tex, glm::vec2 uv, float lod) {
+    if constexpr (F == TextureFilter::Nearest) return sampleNearest(tex, uv);
+    if constexpr (F == TextureFilter::Bilinear) return sampleBilinear(tex, uv);
+    if constexpr (F == TextureFilter::Trilinear) return sampleTrilinear(tex, uv, lod);
+}
+
+/// The colour of a fragment from its interpolated varyings (conventions §6, §7): vertex or
+/// Gouraud colour as interpolated; Phong lights the renormalised normal here; the texture
+/// shader returns the texel, times that colour with "combine".
+template <class V>
+inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k, float lod) {
+    constexpr VaryingLayout L = V::kLayout;
+    glm::vec3 rgb = k.baseColor;
+    if constexpr (L.color) rgb = vec3At(a, L.colorAt());
+    if constexpr (L.phong) {
+        const glm::vec3 n = normalizeOrZero(vec3At(a, L.normalAt()));
+        rgb = shade(rgb, lightIntensity(vec3At(a, L.positionAt()), n, k.eye, k.lighting));
+    }
+    if constexpr (V::kShader == ShaderKind::Texture) {
+        const glm::vec3 texel =
+            sampleTexture<V::kFilter>(*k.texture, {a[L.uvAt()], a[L.uvAt() + 1]}, lod);
+        if constexpr (V::kCombine) return texel * rgb;
+        return texel;
+    }
+    return rgb;
+}
+
+}  // namespace facet::detail

@@ -1,0 +1,117 @@
+#pragma once
+// The triangle pixel loops of the fast path, after the shared front end: the scalar loop (every
+// variant, one pixel at a time) and the choice between it and the 8-lane span loop. Each is a
+// template over a Variant (fragment.hpp), instantiated once per pipeline state by the dispatcher
+// (pipeline/variants.hpp).
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "frontend/front_end.hpp"
+#include "shading/fragment.hpp"
+#include "shading/span_loop.hpp"
+
+namespace facet::detail {
+
+/// Perspective-correct weights of vertices 1 and 2 at (dx, dy); false where 1/w is not positive
+/// and finite (possible only when extrapolating outside the triangle).
+inline bool perspectiveWeights(const Planes& p, float dx, float dy, float& m1, float& m2) {
+    const float q = Planes::eval(p.q, dx, dy);
+    if (!(q > 0.0f) || !std::isfinite(q)) return false;
+    const float r = 1.0f / q;
+    m1 = Planes::eval(p.u1, dx, dy) * r;
+    m2 = Planes::eval(p.u2, dx, dy) * r;
+    return true;
+}
+
+/// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
+template <class V>
+[[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
+                                              const Planes& p) {
+    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
+    Framebuffer& fb = *ctx.fb;
+    const DrawConstants& k = *ctx.constants;
+    constexpr VaryingLayout L = V::kLayout;
+    // Subdivided: the exact weights at the two ends of the current N-pixel span, kept while the
+    // loop stays in it (rows are walked left to right).
+    int spanY = INT_MIN, spanX0 = INT_MIN;
+    bool spanExact = false;
+    float s1a = 0.0f, s2a = 0.0f, s1b = 0.0f, s2b = 0.0f;
+    const int n = ctx.subdivision;
+    const float invN = 1.0f / static_cast<float>(n);
+    std::size_t fragments = 0;
+
+    forEachCovered(setup, [&](int x, int y) {
+        ++fragments;
+        const auto dx = static_cast<float>(x - p.baseX);
+        const auto dy = static_cast<float>(y - p.baseY);
+        const float depth = 1.0f / Planes::eval(p.q, dx, dy);
+        const std::size_t i = fb.index(x, y);
+        if (!passesDepth<V::kShader>(fb, i, depth)) return;
+
+        float m1 = 0.0f, m2 = 0.0f;
+        if constexpr (V::kInterp == Interp::Affine) {
+            m1 = Planes::eval(p.l1, dx, dy);
+            m2 = Planes::eval(p.l2, dx, dy);
+        } else if constexpr (V::kInterp == Interp::Perspective) {
+            m1 = Planes::eval(p.u1, dx, dy) * depth;
+            m2 = Planes::eval(p.u2, dx, dy) * depth;
+        } else {
+            const int x0 = x / n * n;  // x >= 0: division is floor
+            if (y != spanY || x0 != spanX0) {
+                spanY = y;
+                spanX0 = x0;
+                const auto ex = static_cast<float>(x0 - p.baseX);
+                spanExact = !perspectiveWeights(p, ex, dy, s1a, s2a) ||
+                            !perspectiveWeights(p, ex + static_cast<float>(n), dy, s1b, s2b);
+            }
+            if (spanExact) {  // the span's ends are unusable: exact at this pixel instead
+                m1 = Planes::eval(p.u1, dx, dy) * depth;
+                m2 = Planes::eval(p.u2, dx, dy) * depth;
+            } else {
+                const float t = static_cast<float>(x - x0) * invN;
+                m1 = s1a + (s1b - s1a) * t;
+                m2 = s2a + (s2b - s2a) * t;
+            }
+        }
+        float a[V::kCount > 0 ? V::kCount : 1];
+        for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
+
+        float lod = 0.0f;
+        if constexpr (V::kDerivatives) {
+            // d(weights)/dx and /dy of the mode's own interpolation: constant when affine, the
+            // analytic derivative of the perspective-correct weights otherwise.
+            float w1x = p.l1[1], w1y = p.l1[2], w2x = p.l2[1], w2y = p.l2[2];
+            if constexpr (V::kInterp != Interp::Affine) {
+                // The perspective weights at this pixel: already m1, m2 unless subdivided.
+                constexpr bool exact = V::kInterp == Interp::Perspective;
+                const float pm1 = exact ? m1 : Planes::eval(p.u1, dx, dy) * depth;
+                const float pm2 = exact ? m2 : Planes::eval(p.u2, dx, dy) * depth;
+                w1x = (p.u1[1] - pm1 * p.q[1]) * depth;
+                w1y = (p.u1[2] - pm1 * p.q[2]) * depth;
+                w2x = (p.u2[1] - pm2 * p.q[1]) * depth;
+                w2y = (p.u2[2] - pm2 * p.q[2]) * depth;
+            }
+            const int u = L.uvAt();
+            const glm::vec2 d1(p.d1[u], p.d1[u + 1]), d2(p.d2[u], p.d2[u + 1]);
+            lod = mipLevel(*k.texture, d1 * w1x + d2 * w2x, d1 * w1y + d2 * w2y);
+        }
+        storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
+    });
+    return fragments;
+}
+
+/// The triangle rasterizer of variant V: wide affine or perspective triangles take the 8-lane
+/// span loop, the rest the scalar one. Both are kept out of line so that each is optimised
+/// (and its shading inlined) on its own.
+template <class V>
+std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+    if constexpr (V::kInterp != Interp::Subdivided && !V::kDerivatives)
+        if (setup.box.x1 - setup.box.x0 >= kNarrowBox) return rasterizeSpans<V>(context, setup, p);
+    return rasterizeScalar<V>(context, setup, p);
+}
+
+}  // namespace facet::detail
