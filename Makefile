@@ -26,8 +26,9 @@ run: build
 	$(BUILD)/app/facet-view assets/default.scene
 
 # The viewer's window tests start their own virtual display (xvfb-run -a) and input (xdotool).
+# Then the skipped tests and why (scripts/test-summary.sh), keeping ctest's exit status.
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j 2
+	cd $(BUILD) && ctest --output-on-failure -j 2; s=$$?; bash $(CURDIR)/scripts/test-summary.sh; exit $$s
 
 # The same tests built with AddressSanitizer and UndefinedBehaviorSanitizer (what CI also runs).
 test-sanitize: setup
@@ -35,7 +36,7 @@ test-sanitize: setup
 	  -DFACET_SANITIZE=address,undefined -DFACET_BUILD_VIEWER=OFF $(CMAKE_ARGS)
 	cmake --build $(BUILD_ASAN)
 	cd $(BUILD_ASAN) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --output-on-failure -j 2
+	  ctest --output-on-failure -j 2; s=$$?; bash $(CURDIR)/scripts/test-summary.sh; exit $$s
 
 # Kernel micro-benchmarks (tests/kernels_bench.cpp) from the Release build. Each runs 5 times and
 # only the aggregates (mean, median, stddev, cv) are shown, since one run on a busy machine can be

@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "shared_data.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -79,8 +81,8 @@ TEST_F(Cli, SizeOptionResizesAndFramesTimesArePrinted) {
 }
 
 TEST_F(Cli, CourseScenesRenderInEveryMode) {
-    const std::string scene = std::string(FACET_SHARED_DIR) + "/data/course/example2.scene";
-    if (!fs::exists(scene)) GTEST_SKIP() << "shared data not available";
+    const std::string scene = facet::test::sharedData("course/example2.scene");
+    REQUIRE_SHARED_DATA(scene);
     for (const char* mode : {"vertices", "wireframe", "solid"}) {
         const Outcome r =
             run("render " + scene + " -o " + out("m.png") + " --shader painter --mode " + mode);
@@ -139,8 +141,8 @@ TEST_F(Cli, TextureErrorsNameTheImage) {
 
 // The commands, as a user types them, on the course and Spot scenes.
 TEST_F(Cli, ShadingCommandsOfTheCourse) {
-    const std::string shared = std::string(FACET_SHARED_DIR) + "/data/";
-    if (!fs::exists(shared + "course/brick.jpg")) GTEST_SKIP() << "shared data not available";
+    const std::string shared = facet::test::sharedData("");
+    REQUIRE_SHARED_DATA(shared + "course/brick.jpg");
     const std::string wall = shared + "course/example_textured.scene --shader texture --texture " +
                              shared + "course/brick.jpg";
     const std::string cases[] = {
@@ -374,8 +376,8 @@ TEST_F(Cli, BenchBadFiltersAreBadInput) {
 // filters, 2 lightings, 3 samplings), `#` header lines, perspective no worse than affine and
 // 4×4 supersampling no worse than one sample.
 TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
-    const std::string course = std::string(FACET_SHARED_DIR) + "/data/course/";
-    if (!fs::exists(course + "brick.jpg")) GTEST_SKIP() << "shared data not available";
+    const std::string course = facet::test::sharedData("course/");
+    REQUIRE_SHARED_DATA(course + "brick.jpg");
     const Outcome r = run("accuracy " + course + "example_textured.scene --texture " + course +
                           "brick.jpg --samples 2 --frames 1 --warmup 0 --csv " + out("a.csv"));
     ASSERT_EQ(r.exitCode, 0) << r.out;

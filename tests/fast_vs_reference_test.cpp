@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -148,8 +147,7 @@ class FastVsReference : public testing::TestWithParam<Case> {};
 
 TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     const Case& c = GetParam();
-    const std::string path = facet::test::sharedScenePath(c.scene);
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data not found: " << path;
+    REQUIRE_SHARED_DATA(facet::test::sharedScenePath(c.scene));
     std::string error;
     const facet::Scene* loaded = facet::test::loadCached(c.scene, error);
     ASSERT_NE(loaded, nullptr) << error;

@@ -88,6 +88,14 @@ class TwinEnvironment : public testing::Environment {
 [[maybe_unused]] testing::Environment* const kEnvironment =
     testing::AddGlobalTestEnvironment(new TwinEnvironment);
 
+// Without a context (no EGL or Mesa driver) this machine cannot run the twin, so its tests skip;
+// a context without a renderer is the twin's own failure (e.g. a shader that does not build).
+#define REQUIRE_TWIN()                                                                        \
+    do {                                                                                      \
+        if (!twin().context) GTEST_SKIP() << "no headless OpenGL context: " << twin().whyNot; \
+        if (!twin().renderer) FAIL() << "the OpenGL twin cannot start: " << twin().whyNot;    \
+    } while (false)
+
 /// What a case may differ by, measured on llvmpipe (Mesa 22.3.6, Debian 12) and stated with
 /// some room; the measured values are in the comments and in each case's summary line.
 struct Tolerance {
@@ -221,11 +229,10 @@ DiffHistogram diffHistogram(const facet::Framebuffer& gl, const facet::reference
 class GlVsReference : public testing::TestWithParam<Case> {};
 
 TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
+    REQUIRE_TWIN();
     Twin& t = twin();
-    if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
     const Case& c = GetParam();
-    if (!std::filesystem::exists(facet::test::sharedScenePath(c.scene)))
-        GTEST_SKIP() << "shared data not found: " << c.scene;
+    REQUIRE_SHARED_DATA(facet::test::sharedScenePath(c.scene));
     std::string error;
     const facet::Scene* loaded = facet::test::loadCached(c.scene, error);
     ASSERT_NE(loaded, nullptr) << error;
@@ -276,11 +283,12 @@ facet::Framebuffer renderTwin(facet::GlRenderer& renderer, const facet::Scene& s
 // The viewer will share its window's context with the twin: a render must neither depend on
 // the state the caller left nor change it.
 TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
+    REQUIRE_TWIN();
     Twin& t = twin();
-    if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
+    REQUIRE_SHARED_DATA(facet::test::sharedScenePath("course/example2"));
     std::string error;
     const facet::Scene* scene = facet::test::loadCached("course/example2", error);
-    if (!scene) GTEST_SKIP() << error;
+    ASSERT_NE(scene, nullptr) << error;
     const facet::Framebuffer clean = renderTwin(*t.renderer, *scene);
 
     glViewport(1, 2, 3, 4);
@@ -326,11 +334,12 @@ TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
 
 // A second context with its own renderer draws the same picture; the first works on after.
 TEST(GlTwinContext, ASecondContextDrawsTheSamePicture) {
+    REQUIRE_TWIN();
     Twin& t = twin();
-    if (!t.renderer) GTEST_SKIP() << "no OpenGL context: " << t.whyNot;
+    REQUIRE_SHARED_DATA(facet::test::sharedScenePath("course/example1"));
     std::string error;
     const facet::Scene* scene = facet::test::loadCached("course/example1", error);
-    if (!scene) GTEST_SKIP() << error;
+    ASSERT_NE(scene, nullptr) << error;
     const facet::Framebuffer first = renderTwin(*t.renderer, *scene);
     {
         facet::Result<facet::GlContext> other = facet::GlContext::createHeadless();
@@ -345,9 +354,9 @@ TEST(GlTwinContext, ASecondContextDrawsTheSamePicture) {
 
 // `facet render-gl` as a user runs it: a PNG and the median time of the frames.
 TEST(GlTwinCli, RenderGlWritesThePngAndTheMedianTime) {
-    if (!twin().renderer) GTEST_SKIP() << "no OpenGL context: " << twin().whyNot;
-    const std::string scene = std::string(FACET_SHARED_DIR) + "/data/course/example0.scene";
-    if (!std::filesystem::exists(scene)) GTEST_SKIP() << "shared data not found";
+    REQUIRE_TWIN();
+    const std::string scene = facet::test::sharedScenePath("course/example0");
+    REQUIRE_SHARED_DATA(scene);
     const std::filesystem::path png = std::filesystem::temp_directory_path() /
                                       ("facet_gl_twin_" + std::to_string(::getpid()) + ".png");
     const std::string cmd = std::string(FACET_CLI) + " render-gl " + scene + " -o " + png.string() +

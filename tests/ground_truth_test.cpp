@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -17,6 +16,7 @@
 #include "facet/ground_truth.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
+#include "shared_data.hpp"
 #include "world_at.hpp"
 
 namespace {
@@ -157,8 +157,8 @@ TEST(GroundTruth, SettingsAreTheExactForms) {
 // The course's brick wall, unlit: the perspective fast path is close to the 4×4 ground truth
 // (what is left is edge aliasing and the mip level's blur), affine clearly worse.
 TEST(GroundTruth, TexturedFacetPerspectiveBeatsAffine) {
-    const std::string course = std::string(FACET_SHARED_DIR) + "/data/course/";
-    if (!std::filesystem::exists(course + "brick.jpg")) GTEST_SKIP() << "shared data not available";
+    const std::string course = facet::test::sharedData("course/");
+    REQUIRE_SHARED_DATA(course + "brick.jpg");
     auto scene = facet::loadScene(course + "example_textured.scene");
     ASSERT_TRUE(scene.ok()) << scene.error().what();
     ASSERT_FALSE(facet::loadSceneTexture(scene.value(), course + "brick.jpg"));

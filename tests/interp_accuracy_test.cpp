@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -18,6 +17,7 @@
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "image_compare.hpp"
+#include "shared_data.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -89,8 +89,8 @@ Errors measureAll(const facet::Scene& scene, const char* label) {
 class InterpolationAccuracy : public testing::Test {
   protected:
     void SetUp() override {
-        const std::string data = std::string(FACET_SHARED_DIR) + "/data/course/";
-        if (!std::filesystem::exists(data + "brick.jpg")) GTEST_SKIP() << "shared data not found";
+        const std::string data = facet::test::sharedData("course/");
+        REQUIRE_SHARED_DATA(data + "brick.jpg");
         facet::Result<facet::Scene> loaded = facet::loadScene(data + "example_textured.scene");
         ASSERT_TRUE(loaded.ok()) << loaded.error().what();
         scene = std::move(loaded).value();

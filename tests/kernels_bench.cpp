@@ -16,8 +16,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -36,6 +39,7 @@
 #include "frontend/front_end.hpp"
 #include "shading/fragment.hpp"
 #include "shading/scalar_loop.hpp"
+#include "shared_data.hpp"
 
 namespace {
 
@@ -67,8 +71,17 @@ class Rng {
 const char* const kBunnyScene = FACET_SHARED_DIR "/data/scenes/bunny_1920x1080.scene";
 
 /// The bunny at 1920×1080, loaded once for all benchmarks (loading costs more than most of them);
-/// null with `error` set when the shared data is missing.
+/// null with `error` set when the shared data is missing, and under CI the end of the run (the
+/// benchmark's own error would not fail it).
 const Scene* bunny(std::string& error) {
+    if (std::string missing = test::missingSharedData(kBunnyScene); !missing.empty()) {
+        if (test::sharedDataRequired()) {
+            std::fprintf(stderr, "%s\n", missing.c_str());
+            std::exit(1);
+        }
+        error = std::move(missing);
+        return nullptr;
+    }
     static const Result<Scene> scene = loadScene(kBunnyScene);
     if (!scene.ok()) {
         error = scene.error().what();

@@ -7,16 +7,20 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <unistd.h>
+
 #include "facet/mesh.hpp"
 #include "facet/mesh_io.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
+#include "shared_data.hpp"
 
 namespace {
 
@@ -28,19 +32,11 @@ std::string data(const std::string& name) {
     return std::string(FACET_TEST_DATA) + "/" + name;
 }
 std::string course(const std::string& name) {
-    return std::string(FACET_SHARED_DIR) + "/data/course/" + name;
+    return facet::test::sharedData("course/" + name);
 }
 std::string shared(const std::string& name) {
-    return std::string(FACET_SHARED_DIR) + "/data/" + name;
+    return facet::test::sharedData(name);
 }
-bool haveShared() {
-    return fs::is_directory(std::string(FACET_SHARED_DIR) + "/data/course");
-}
-
-#define REQUIRE_SHARED()                                                                 \
-    do {                                                                                 \
-        if (!haveShared()) GTEST_SKIP() << "shared data not found at " FACET_SHARED_DIR; \
-    } while (false)
 
 // The result is an error at `line` of a file whose name ends in `file`, and its message contains
 // every one of `parts`.
@@ -173,7 +169,7 @@ TEST(OffLoader, TinyValuesUnderflowToZeroInsteadOfFailing) {
 }
 
 TEST(OffLoader, CourseFiles) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(shared("course"));
     struct Case {
         const char* file;
         std::size_t vertices, triangles;
@@ -191,7 +187,7 @@ TEST(OffLoader, CourseFiles) {
 }
 
 TEST(OffLoader, CourseTexturedFacet) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(course("textured_facet.off"));
     auto r = facet::loadOff(course("textured_facet.off"));
     expectLoaded(r);
     ASSERT_EQ(r->uvs.size(), 4u);
@@ -205,7 +201,7 @@ TEST(OffLoader, CourseTexturedFacet) {
 }
 
 TEST(OffLoader, CourseCubeColors) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(course("cube_multi_color.off"));
     auto r = facet::loadOff(course("cube_multi_color.off"));
     expectLoaded(r);
     expectVec(r->colors[0], {0.9f, 0.9f, 0.9f});
@@ -352,8 +348,11 @@ TEST(OffErrors, WhatNamesFileAndLine) {
 // ---------------------------------------------------------------------------------------------
 // OFF writer
 
+// The process id keeps two builds' runs on one machine apart.
 std::string tempFile(const std::string& name) {
-    return (fs::path(testing::TempDir()) / ("facet_loader_test_" + name)).string();
+    return (fs::path(testing::TempDir()) /
+            ("facet_loader_test_" + std::to_string(::getpid()) + "_" + name))
+        .string();
 }
 
 std::uint32_t bits(float v) {
@@ -403,7 +402,7 @@ TEST(OffWriter, MeshWithoutColorsIsWrittenWhite) {
 }
 
 TEST(OffWriter, CourseMonkeyRoundTrips) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(course("monkey2.off"));
     auto a = facet::loadOff(course("monkey2.off"));
     expectLoaded(a);
     const std::string path = tempFile("monkey2.off");
@@ -478,7 +477,7 @@ TEST(ObjLoader, PositionTexcoordPairsAreMerged) {
 }
 
 TEST(ObjLoader, SharedModels) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(shared("models"));
     struct Case {
         const char* file;
         std::size_t triangles;
@@ -495,7 +494,7 @@ TEST(ObjLoader, SharedModels) {
 }
 
 TEST(ObjLoader, StanfordBunny) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(shared("models/stanford-bunny.obj"));
     auto r = facet::loadObj(shared("models/stanford-bunny.obj"));
     expectLoaded(r);
     EXPECT_EQ(r->triangleCount(), 69451u);
@@ -505,7 +504,7 @@ TEST(ObjLoader, StanfordBunny) {
 }
 
 TEST(ObjLoader, SpotHasFlippedUvs) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(shared("models/spot_triangulated.obj"));
     auto r = facet::loadObj(shared("models/spot_triangulated.obj"));
     expectLoaded(r);
     EXPECT_EQ(r->triangleCount(), 5856u);
@@ -621,7 +620,7 @@ TEST(MeshQueries, UniqueEdgesAreSortedPairs) {
 }
 
 TEST(MeshQueries, CubeHas18Edges) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(course("cube_multi_color.off"));
     auto r = facet::loadOff(course("cube_multi_color.off"));
     expectLoaded(r);
     EXPECT_EQ(facet::uniqueEdges(*r).size(), 2u * 18u);  // 12 cube edges + 6 face diagonals
@@ -732,7 +731,7 @@ TEST(SceneLoader, ReplacingTheTextureKeepsTheOldOneOnFailure) {
 }
 
 TEST(SceneLoader, CourseScenes) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(shared("course"));
     {
         auto r = facet::loadScene(course("example0.scene"));
         expectLoaded(r);
@@ -796,7 +795,7 @@ TEST(SceneLoader, CourseScenes) {
 }
 
 TEST(SceneLoader, SharedScenes) {
-    REQUIRE_SHARED();
+    REQUIRE_SHARED_DATA(shared("scenes"));
     auto spot = facet::loadScene(shared("scenes/spot_1280x720.scene"));
     expectLoaded(spot);
     EXPECT_EQ(spot->mesh.triangleCount(), 5856u);
@@ -814,16 +813,68 @@ TEST(SceneLoader, SharedScenes) {
     EXPECT_EQ(bunny->material.s, 20.0);
 }
 
+/// A fresh folder tree made current for one test; the previous current folder comes back and
+/// the tree goes away when it ends, also after a failed ASSERT.
+class TempCurrentFolder {
+  public:
+    TempCurrentFolder() : previous_(fs::current_path()), root_(tempFile("tree")) {
+        fs::remove_all(root_);
+        fs::create_directories(root_);
+    }
+    ~TempCurrentFolder() {
+        fs::current_path(previous_);
+        fs::remove_all(root_);
+    }
+    TempCurrentFolder(const TempCurrentFolder&) = delete;
+    TempCurrentFolder& operator=(const TempCurrentFolder&) = delete;
+
+    /// Creates an empty file (and its folders) at `relative` under the tree; its full path.
+    std::string touch(const std::string& relative) const {
+        const fs::path path = root_ / relative;
+        fs::create_directories(path.parent_path());
+        std::ofstream(path).put('\n');
+        return path.string();
+    }
+    /// Makes the folder `relative` under the tree (created if needed) the current folder.
+    void enter(const std::string& relative) const {
+        fs::create_directories(root_ / relative);
+        fs::current_path(root_ / relative);
+    }
+    std::string path(const std::string& relative) const { return (root_ / relative).string(); }
+
+  private:
+    fs::path previous_, root_;
+};
+
+// The three places, in order, in a tree the test owns: what the build folder or the current
+// folder holds cannot make a rule pass or fail by accident.
 TEST(SceneLoader, ResolveScenePathRules) {
-    const std::string scene = data("scene_valid.scene");
+    TempCurrentFolder tree;
+    const std::string scene = tree.path("scenes/x.scene");  // never read, only its folder
+    tree.enter("here");
+
     // 1: next to the scene file.
-    EXPECT_EQ(facet::resolveScenePath(scene, "mesh_square.off"), data("mesh_square.off"));
+    const std::string next = tree.touch("scenes/next.off");
+    EXPECT_EQ(facet::resolveScenePath(scene, "next.off"), next);
+    // 2: relative to the current folder, returned as written.
+    tree.touch("here/meshes/cwd.off");
+    EXPECT_EQ(facet::resolveScenePath(scene, "meshes/cwd.off"), "meshes/cwd.off");
     // 3: the bare file name next to the scene file (the course's "data/..." paths).
-    EXPECT_EQ(facet::resolveScenePath(scene, "data/mesh_square.off"), data("mesh_square.off"));
-    // 2: relative to the current folder, for a scene somewhere else.
-    const std::string fromHere = fs::relative(data("mesh_square.off"), fs::current_path()).string();
-    const std::string elsewhere = (fs::path(testing::TempDir()) / "x.scene").string();
-    EXPECT_EQ(facet::resolveScenePath(elsewhere, fromHere), fromHere);
+    const std::string bare = tree.touch("scenes/bare.off");
+    EXPECT_EQ(facet::resolveScenePath(scene, "data/bare.off"), bare);
+
+    // The order: next to the scene beats the current folder, which beats the bare name.
+    const std::string both = tree.touch("scenes/meshes/both.off");
+    tree.touch("here/meshes/both.off");
+    EXPECT_EQ(facet::resolveScenePath(scene, "meshes/both.off"), both);
+    tree.touch("here/data/two.off");
+    tree.touch("scenes/two.off");
+    EXPECT_EQ(facet::resolveScenePath(scene, "data/two.off"), "data/two.off");
+
+    // Rule 2 follows the current folder: from elsewhere the same name is not found.
+    tree.enter("scenes");
+    EXPECT_EQ(facet::resolveScenePath(scene, "meshes/cwd.off"), "");
+
     // Nothing found.
     EXPECT_EQ(facet::resolveScenePath(scene, "no_such_mesh.off"), "");
     EXPECT_EQ(facet::resolveScenePath(scene, ""), "");

@@ -11,14 +11,16 @@
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "image_compare.hpp"
+#include "shared_data.hpp"
 
 namespace facet {
 namespace {
 
 TEST(NearPlane, CameraThroughTheBunnyStaysFiniteAndMatchesTheReference) {
-    const std::string path = std::string(FACET_SHARED_DIR) + "/data/scenes/bunny_1280x720.scene";
+    const std::string path = test::sharedData("scenes/bunny_1280x720.scene");
+    REQUIRE_SHARED_DATA(path);
     Result<Scene> loaded = loadScene(path);
-    if (!loaded) GTEST_SKIP() << "shared data not available: " << loaded.error().what();
+    ASSERT_TRUE(loaded.ok()) << loaded.error().what();
     Scene scene = loaded.value();
     // Colour the vertices by position so interpolation errors show up as colour differences.
     const Bounds b = computeBounds(scene.mesh);

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "facet/mesh_io.hpp"
 #include "facet/normals.hpp"
 #include "facet/procedural.hpp"
+#include "shared_data.hpp"
 
 namespace {
 
@@ -94,8 +94,8 @@ TEST(Normals, CourseCubeBuiltInCode) {
 }
 
 TEST(Normals, CourseCubeFile) {
-    const std::string path = std::string(FACET_SHARED_DIR) + "/data/course/cube_multi_color.off";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "missing " << path;
+    const std::string path = facet::test::sharedData("course/cube_multi_color.off");
+    REQUIRE_SHARED_DATA(path);
     const facet::Result<Mesh> mesh = facet::loadOff(path);
     ASSERT_TRUE(mesh.ok()) << mesh.error().what();
     ASSERT_EQ(mesh.value().indices, courseCube().indices);

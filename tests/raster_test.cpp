@@ -15,6 +15,7 @@
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
+#include "shared_data.hpp"
 
 namespace facet {
 namespace {
@@ -259,9 +260,10 @@ TEST(Watertight, ClosedMeshesHaveNoCracksOrDoubleEdges) {
 TEST(Watertight, BunnyLeavesNoBackgroundPixelInsideItsSilhouette) {
     // The silhouette comes from the double-precision reference; a crack in the fast path would
     // show as background where the reference, away from any edge, says the bunny is.
-    const std::string path = std::string(FACET_SHARED_DIR) + "/data/scenes/bunny_1280x720.scene";
+    const std::string path = test::sharedData("scenes/bunny_1280x720.scene");
+    REQUIRE_SHARED_DATA(path);
     Result<Scene> scene = loadScene(path);
-    if (!scene) GTEST_SKIP() << "shared data not available: " << scene.error().what();
+    ASSERT_TRUE(scene.ok()) << scene.error().what();
     RenderSettings s;
     s.background = 0x000000;
     Renderer r;

@@ -14,6 +14,7 @@
 #include "facet/scene.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
+#include "shared_data.hpp"
 
 namespace facet::test {
 
@@ -78,7 +79,7 @@ inline RenderSettings settingsFor(const SceneCase& c) {
 
 /// The .scene file of a case's scene.
 inline std::string sharedScenePath(const std::string& name) {
-    return std::string(FACET_SHARED_DIR) + "/data/" + name + ".scene";
+    return sharedData(name + ".scene");
 }
 
 /// The course's textured facet names no texture; the course pairs it with the brick image.
@@ -99,7 +100,7 @@ inline const Scene* loadCached(const std::string& name, std::string& error) {
     }
     auto scene = std::make_unique<Scene>(std::move(loaded).value());
     if (!textureFor(name).empty()) {
-        const std::string image = std::string(FACET_SHARED_DIR) + "/data/" + textureFor(name);
+        const std::string image = sharedData(textureFor(name));
         if (Status st = loadSceneTexture(*scene, image)) {
             error = st->what();
             return nullptr;

@@ -38,6 +38,7 @@
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "image_compare.hpp"
+#include "shared_data.hpp"
 
 namespace facet {
 namespace {
@@ -432,10 +433,10 @@ TEST(ExtremeTriangles, ScaledSpheresMatchReferenceThroughRender) {
 // 2. Camera paths
 
 /// A shared scene at a small size with vertices coloured by position (so interpolation errors
-/// show as colour differences); false when the shared data is missing.
-bool loadShared(const char* relative, Scene& scene, int w, int h) {
-    Result<Scene> loaded = loadScene(std::string(FACET_SHARED_DIR) + "/data/" + relative);
-    if (!loaded) return false;
+/// show as colour differences); the loader's error when it fails.
+Status loadShared(const char* relative, Scene& scene, int w, int h) {
+    Result<Scene> loaded = loadScene(test::sharedData(relative));
+    if (!loaded) return loaded.error();
     scene = std::move(loaded).value();
     const Bounds b = computeBounds(scene.mesh);
     scene.mesh.colors.clear();
@@ -444,7 +445,7 @@ bool loadShared(const char* relative, Scene& scene, int w, int h) {
     scene.camera.focal *= static_cast<double>(w) / scene.camera.width;
     scene.camera.width = w;
     scene.camera.height = h;
-    return true;
+    return std::nullopt;
 }
 
 // A camera flying through Spot and the bunny on a path that is not the near-plane test's, Phong
@@ -452,7 +453,9 @@ bool loadShared(const char* relative, Scene& scene, int w, int h) {
 TEST(CameraPaths, FlyThroughSpotAndBunnyMatchesReference) {
     for (const char* path : {"scenes/spot_1280x720.scene", "scenes/bunny_1280x720.scene"}) {
         Scene scene;
-        if (!loadShared(path, scene, 96, 54)) GTEST_SKIP() << "shared data not available";
+        REQUIRE_SHARED_DATA(test::sharedData(path));
+        const Status error = loadShared(path, scene, 96, 54);
+        ASSERT_FALSE(error) << error->what();
         const Bounds b = computeBounds(scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
         const glm::dvec3 dir = glm::normalize(glm::dvec3(-0.7, 0.15, 0.6));
@@ -480,8 +483,9 @@ TEST(CameraPaths, FlyThroughSpotAndBunnyMatchesReference) {
 // a bunny vertex, looking straight at it and looking along the surface.
 TEST(CameraPaths, GrazingTheNearPlaneMatchesReference) {
     Scene scene;
-    if (!loadShared("scenes/bunny_1280x720.scene", scene, 80, 45))
-        GTEST_SKIP() << "shared data not available";
+    REQUIRE_SHARED_DATA(test::sharedData("scenes/bunny_1280x720.scene"));
+    const Status error = loadShared("scenes/bunny_1280x720.scene", scene, 80, 45);
+    ASSERT_FALSE(error) << error->what();
     const Bounds b = computeBounds(scene.mesh);
     const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
     const double nearPlane = resolveNearPlane(RenderSettings{}, scene.mesh);
@@ -548,7 +552,9 @@ TEST(CameraPaths, DegenerateLookAtIsRejectedAndRendersNoNaN) {
 TEST(CameraPaths, FarAwaySubPixelMeshesMatchReference) {
     for (const char* path : {"scenes/spot_1280x720.scene", "scenes/bunny_1280x720.scene"}) {
         Scene scene;
-        if (!loadShared(path, scene, 64, 36)) GTEST_SKIP() << "shared data not available";
+        REQUIRE_SHARED_DATA(test::sharedData(path));
+        const Status error = loadShared(path, scene, 64, 36);
+        ASSERT_FALSE(error) << error->what();
         const glm::dvec3 look = scene.camera.look;
         const glm::dvec3 away = scene.camera.eye - look;
         Renderer renderer;
@@ -624,6 +630,8 @@ const app::ViewAnglePoint& at(const std::vector<app::ViewAnglePoint>& points, co
 // The numbers below are from the same configuration `facet sweeps` charts (160 × 160, ground
 // truth 8 × 8), docs/sweeps/view_angle.csv.
 TEST(ViewAngle, AffineDegradesWithAnglePerspectiveStaysExact) {
+    // Without the course's brick the sweep uses generated bricks, which the numbers are not for.
+    REQUIRE_SHARED_DATA(test::sharedData("course/brick.jpg"));
     app::SweepOptions options;
     options.shared = std::string(FACET_SHARED_DIR);
     options.frames = 1;

@@ -17,6 +17,7 @@
 
 #include "accuracy/sweep_camera.hpp"
 #include "accuracy/sweep_extreme.hpp"
+#include "shared_data.hpp"
 
 namespace facet::app {
 namespace {
@@ -35,6 +36,14 @@ SweepOptions quickOptions() {
     o.frames = 1;
     return o;
 }
+
+// The camera paths run through Spot and the bunny; without them the sweep falls back on a torus
+// knot (RunsOnAProceduralMeshWithoutSharedData), which would not be what these tests claim.
+#define REQUIRE_SWEEP_MESHES()                                                       \
+    do {                                                                             \
+        REQUIRE_SHARED_DATA(facet::test::sharedData("scenes/spot_1280x720.scene"));  \
+        REQUIRE_SHARED_DATA(facet::test::sharedData("scenes/bunny_1280x720.scene")); \
+    } while (false)
 
 /// Every cell but the text columns (the first two) parses as a finite number.
 void expectFiniteTable(const SweepTable& t, std::size_t points) {
@@ -135,6 +144,7 @@ TEST(SweepExtreme, WhatMustDrawDrawsAndWhatHasNoPositionVanishes) {
 }
 
 TEST(SweepCameraPaths, EveryFrameMatchesTheReferenceWithoutNaN) {
+    REQUIRE_SWEEP_MESHES();
     const SweepOptions options = quickOptions();
     const std::vector<CameraPoint> points = sweepCameraPaths(options);
     std::set<std::string> paths;
@@ -212,6 +222,7 @@ TEST(SweepCameraPaths, RunsOnAProceduralMeshWithoutSharedData) {
 // the camera-space depth to cancellation (w ≈ 2.5e-4 from positions ~0.1); clip coordinates
 // are now computed in double and rounded once, and every frame is within 1 LSB.
 TEST(SweepCameraPaths, FullSweepEveryFrameWithinOneLsb) {
+    REQUIRE_SWEEP_MESHES();
     SweepOptions options = quickOptions();
     options.quick = false;
     const std::vector<CameraPoint> points = sweepCameraPaths(options);

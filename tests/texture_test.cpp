@@ -20,7 +20,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <random>
 #include <string>
@@ -31,11 +30,10 @@
 #include "facet/texture.hpp"
 #include "reference/samplers.hpp"
 #include "shading/samplers.hpp"
+#include "shared_data.hpp"
 
 namespace facet {
 namespace {
-
-namespace fs = std::filesystem;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -45,7 +43,7 @@ std::string data(const std::string& name) {
     return std::string(FACET_TEST_DATA) + "/" + name;
 }
 std::string shared(const std::string& name) {
-    return std::string(FACET_SHARED_DIR) + "/data/" + name;
+    return facet::test::sharedData(name);
 }
 
 /// A texture whose texel (x, y) is fn(x, y), packed RGBA.
@@ -594,8 +592,7 @@ TEST(TextureLoad, FormatsAndOrientation) {
 }
 
 TEST(TextureLoad, SharedImages) {
-    if (!fs::is_directory(shared("course")))
-        GTEST_SKIP() << "shared data not found at " FACET_SHARED_DIR;
+    REQUIRE_SHARED_DATA(shared("course"));
     struct Want {
         std::string file;
         int w, h, levels;

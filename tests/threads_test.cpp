@@ -54,6 +54,7 @@ class ThreadCount : public testing::TestWithParam<ThreadCase> {};
 // counters.
 TEST_P(ThreadCount, GivesTheOneThreadImage) {
     const ThreadCase& c = GetParam();
+    REQUIRE_SHARED_DATA(sharedScenePath(c.scene.scene));
     std::string error;
     const Scene* scene = loadCached(c.scene.scene, error);
     ASSERT_NE(scene, nullptr) << error;
@@ -133,6 +134,8 @@ TEST(Tiles, BordersNeitherDropNorDoublePixels) {
 // After the first frame, frames of the same size allocate nothing: the engine keeps its scratch
 // buffers, bins and records. Counted for every shader family and thread count.
 TEST(Allocation, NoneAfterTheFirstFrame) {
+    REQUIRE_SHARED_DATA(sharedScenePath("scenes/bunny_1280x720"));
+    REQUIRE_SHARED_DATA(sharedScenePath("scenes/spot_1280x720"));
     std::string error;
     const Scene* bunny = loadCached("scenes/bunny_1280x720", error);
     ASSERT_NE(bunny, nullptr) << error;

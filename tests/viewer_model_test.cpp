@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include "facet/camera.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
@@ -389,7 +391,9 @@ TEST(ViewerFiles, ListsScenesRecentAndFreeNames) {
     pushRecent(recent, "/d.scene", 3);
     EXPECT_EQ(recent, (std::vector<std::string>{"/d.scene", "/c.scene", "/a.scene"}));
 
-    const fs::path dir = fs::temp_directory_path() / "facet_viewer_model_test_shots";
+    // The process id keeps two builds' runs on one machine apart.
+    const fs::path dir =
+        fs::temp_directory_path() / ("facet_viewer_model_test_shots_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     const std::string first = nextFreePath(dir.string(), "shot");
