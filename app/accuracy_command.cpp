@@ -14,8 +14,9 @@
 #include "bench/bench_chart.hpp"
 #include "bench/machine_info.hpp"
 #include "commands.hpp"
+#include "facet/evaluation/ground_truth.hpp"
+#include "facet/evaluation/image_metrics.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/ground_truth.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 
@@ -99,15 +100,15 @@ int runAccuracy(const AccuracyOptions& o) {
         for (std::size_t j = 0; j < methods.size(); ++j) {
             const AccuracyMethod& m = methods[j];
             AccuracyResult r{name, m.axis, m.name, scene.camera.width, scene.camera.height};
-            summarise(times[j], r);
+            r.times = summarize(times[j]);
             renderer.render(scene, m.settings, frame);  // the image the error is measured on
             r.error = measureError(frame, truth);
             std::fprintf(stderr,
                          "[%zu/%zu] %s %s %s: %.3f ms (min %.3f, max %.3f), RMSE %.3f, PSNR %.2f "
                          "dB, max %.1f, %.2f %% > 2 LSB\n",
-                         ++done, total, name.c_str(), m.axis.c_str(), m.name.c_str(), r.medianMs,
-                         r.minMs, r.maxMs, r.error.rmse, r.error.psnr, r.error.maxError,
-                         100.0 * r.error.over2Lsb);
+                         ++done, total, name.c_str(), m.axis.c_str(), m.name.c_str(),
+                         r.times.median, r.times.min, r.times.max, r.error.rmse, r.error.psnr,
+                         r.error.maxError, 100.0 * r.error.over2Lsb);
             results.push_back(r);
         }
     }

@@ -1,11 +1,12 @@
 #include "render_options.hpp"
 
-#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 #include "commands.hpp"
+#include "facet/evaluation/frame_times.hpp"
 #include "facet/scene_io.hpp"
 
 namespace facet::app {
@@ -155,11 +156,9 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
 
 void printFrameTimes(std::vector<double> ms) {
     if (ms.size() < 2) return;
-    std::sort(ms.begin(), ms.end());
-    const std::size_t n = ms.size();
-    const double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-    std::printf("median %.3f ms (min %.3f, max %.3f) over %zu frames\n", median, ms.front(),
-                ms.back(), n);
+    const FrameTimes t = summarize(std::move(ms));
+    std::printf("median %.3f ms (min %.3f, max %.3f) over %d frames\n", t.median, t.min, t.max,
+                t.frames);
 }
 
 }  // namespace facet::app

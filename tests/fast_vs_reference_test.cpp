@@ -23,13 +23,13 @@
 #include <utility>
 #include <vector>
 
+#include "facet/evaluation/reference_compare.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
-#include "image_compare.hpp"
 #include "scene_cases.hpp"
 
 namespace {
@@ -162,13 +162,13 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     ASSERT_EQ(fast.width, ref.width);
     ASSERT_EQ(fast.height, ref.height);
 
-    const facet::test::Comparison r =
-        facet::test::compare(fast, ref, c.shader, settings.background);
+    const facet::ReferenceDiff r =
+        facet::compareWithReference(fast, ref, c.shader, settings.background);
     const std::string name = facet::test::caseName(c);
     std::printf(
         "[fast-vs-ref] %-44s compared=%zu covered=%zu ambiguous=%zu differing=%zu "
         "maxdiff=%d offby1=%zu clipped=%zu\n",
-        name.c_str(), r.compared, r.covered, r.ambiguous, r.coverageDiffers, r.maxColorDiff,
+        name.c_str(), r.compared, r.comparedCovered, r.ambiguous, r.coverageDiffers, r.maxColorDiff,
         r.offByOne, stats.trianglesClipped);
     RecordProperty("compared", static_cast<int>(r.compared));
     RecordProperty("ambiguous", static_cast<int>(r.ambiguous));

@@ -29,6 +29,7 @@
 
 #include <unistd.h>
 
+#include "facet/evaluation/reference_compare.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
 #include "facet/scene.hpp"
@@ -36,7 +37,6 @@
 #include "facet/settings.hpp"
 #include "gl_context.hpp"
 #include "gl_renderer.hpp"
-#include "image_compare.hpp"
 #include "scene_cases.hpp"
 
 namespace {
@@ -181,51 +181,6 @@ std::vector<Case> allCases() {
     return cases;
 }
 
-/// Colour differences over the unambiguous pixels both images drew, as a histogram.
-struct DiffHistogram {
-    std::array<std::size_t, 256> count{};
-    std::size_t total = 0;
-
-    /// The smallest difference at or above which lies `fraction` of the pixels.
-    int percentile(double fraction) const {
-        const auto target =
-            static_cast<std::size_t>(std::ceil(fraction * static_cast<double>(total)));
-        std::size_t seen = 0;
-        for (int d = 0; d < 256; ++d) {
-            seen += count[d];
-            if (seen >= target && seen > 0) return d;
-        }
-        return 0;
-    }
-    int max() const {
-        for (int d = 255; d > 0; --d)
-            if (count[d] > 0) return d;
-        return 0;
-    }
-    std::size_t above(int d) const {
-        std::size_t n = 0;
-        for (int i = d + 1; i < 256; ++i) n += count[i];
-        return n;
-    }
-};
-
-DiffHistogram diffHistogram(const facet::Framebuffer& gl, const facet::reference::Image& ref,
-                            ShaderKind shader, std::uint32_t backgroundHex) {
-    DiffHistogram h;
-    const std::vector<std::uint32_t> refRgba = ref.toRgba();
-    const std::uint32_t background = facet::rgbaFromHex(backgroundHex);
-    for (std::size_t i = 0; i < refRgba.size(); ++i) {
-        if (ref.ambiguous[i]) continue;
-        const bool byColour = shader == ShaderKind::Simple;
-        const bool refCovered = byColour ? refRgba[i] != background : std::isfinite(ref.depth[i]);
-        const bool glCovered = byColour ? gl.color[i] != background : std::isfinite(gl.depth[i]);
-        if (!refCovered || !glCovered) continue;
-        ++h.count[static_cast<std::size_t>(facet::test::channelDiff(refRgba[i], gl.color[i]))];
-        ++h.total;
-    }
-    return h;
-}
-
 class GlVsReference : public testing::TestWithParam<Case> {};
 
 TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
@@ -247,17 +202,18 @@ TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
     ASSERT_EQ(gl.width, ref.width);
     ASSERT_EQ(gl.height, ref.height);
 
-    const facet::test::Comparison r = facet::test::compare(gl, ref, c.shader, settings.background);
-    const DiffHistogram h = diffHistogram(gl, ref, c.shader, settings.background);
+    // The histogram: colour differences over the unambiguous pixels both images drew.
+    facet::DiffHistogram h;
+    const facet::ReferenceDiff r =
+        facet::compareWithReference(gl, ref, c.shader, settings.background, &h);
     const double coverage = static_cast<double>(r.coverageDiffers) /
-                            static_cast<double>(std::max<std::size_t>(1, r.covered));
-    const double over1 =
-        static_cast<double>(h.above(1)) / static_cast<double>(std::max<std::size_t>(1, h.total));
+                            static_cast<double>(std::max<std::size_t>(1, r.comparedCovered));
+    const double over1 = h.shareAbove(1);
     const std::string name = facet::test::caseName(c);
     std::printf(
         "[gl-vs-ref] %-46s covered=%zu ambiguous=%zu differing=%zu (%.4f%%) diff "
         "p50/p99/p99.9/max=%d/%d/%d/%d over1=%.3f%%\n",
-        name.c_str(), r.covered, r.ambiguous, r.coverageDiffers, 100.0 * coverage,
+        name.c_str(), r.comparedCovered, r.ambiguous, r.coverageDiffers, 100.0 * coverage,
         h.percentile(0.5), h.percentile(0.99), h.percentile(0.999), h.max(), 100.0 * over1);
     const Tolerance& tolerance = toleranceFor(c);
     EXPECT_LE(coverage, tolerance.coverage) << name << r.examples;

@@ -12,8 +12,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "facet/evaluation/ground_truth.hpp"
+#include "facet/evaluation/image_metrics.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/ground_truth.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "shared_data.hpp"

@@ -12,49 +12,20 @@
 #include <string>
 #include <vector>
 
+#include "facet/evaluation/reference_compare.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
-#include "image_compare.hpp"
 #include "shared_data.hpp"
 
 #include <glm/geometric.hpp>
 
 namespace {
 
-struct Error {
-    double mean = 0.0;   ///< mean absolute channel error over covered pixels, in LSB
-    double rmse = 0.0;   ///< root mean square channel error, in LSB
-    int max = 0;         ///< largest channel error
-    double over2 = 0.0;  ///< share of covered pixels with some channel more than 2 LSB off
-};
-
-Error measure(const facet::Framebuffer& fast, const std::vector<std::uint32_t>& truth,
-              const facet::reference::Image& ref) {
-    Error e;
-    double sum = 0.0, sum2 = 0.0;
-    std::size_t covered = 0, over2 = 0;
-    for (std::size_t i = 0; i < truth.size(); ++i) {
-        if (!std::isfinite(ref.depth[i]) || ref.ambiguous[i]) continue;
-        ++covered;
-        int worst = 0;
-        for (int shift = 0; shift < 24; shift += 8) {
-            const int d = std::abs(static_cast<int>((fast.color[i] >> shift) & 0xFF) -
-                                   static_cast<int>((truth[i] >> shift) & 0xFF));
-            sum += d;
-            sum2 += static_cast<double>(d) * d;
-            worst = std::max(worst, d);
-        }
-        e.max = std::max(e.max, worst);
-        over2 += worst > 2 ? 1 : 0;
-    }
-    if (covered == 0) return e;
-    e.mean = sum / (3.0 * static_cast<double>(covered));
-    e.rmse = std::sqrt(sum2 / (3.0 * static_cast<double>(covered)));
-    e.over2 = static_cast<double>(over2) / static_cast<double>(covered);
-    return e;
-}
+/// Errors against the reference's perspective-correct picture (8-bit) over the pixels it drew
+/// and does not flag ambiguous: meanError, rmse, maxError and over2Lsb in LSB.
+using Error = facet::ImageError;
 
 /// The five methods on one scene against the reference's perspective-correct truth.
 struct Errors {
@@ -67,16 +38,15 @@ Errors measureAll(const facet::Scene& scene, const char* label) {
     settings.filter = facet::TextureFilter::Bilinear;
     settings.interp = facet::Interp::Perspective;
     const facet::reference::Image ref = facet::reference::render(scene, settings);
-    const std::vector<std::uint32_t> truth = ref.toRgba();
     facet::Renderer renderer;
     facet::Framebuffer frame;
     auto errorOf = [&](facet::Interp interp, int n, const char* name) {
         settings.interp = interp;
         settings.subdivision = n;
         renderer.render(scene, settings, frame);
-        const Error e = measure(frame, truth, ref);
+        const Error e = facet::errorAgainstReference(frame, ref);
         std::printf("[interp-error] %-6s %-14s mean=%.3f rmse=%.3f max=%d over2=%.2f%%\n", label,
-                    name, e.mean, e.rmse, e.max, 100.0 * e.over2);
+                    name, e.meanError, e.rmse, static_cast<int>(e.maxError), 100.0 * e.over2Lsb);
         return e;
     };
     return {errorOf(facet::Interp::Perspective, 16, "perspective"),
@@ -105,15 +75,15 @@ class InterpolationAccuracy : public testing::Test {
 TEST_F(InterpolationAccuracy, CourseViewAffineFailsRowSubdivisionIsExact) {
     const Errors e = measureAll(scene, "course");
     // The exact method is exact: 1 LSB is float rounding.
-    EXPECT_LE(e.perspective.max, 1);
-    EXPECT_EQ(e.perspective.over2, 0.0);
+    EXPECT_LE(e.perspective.maxError, 1.0);
+    EXPECT_EQ(e.perspective.over2Lsb, 0.0);
     // Affine puts the bricks in the wrong place: most pixels are off by far more than rounding.
-    EXPECT_GT(e.affine.mean, 20.0);
-    EXPECT_GT(e.affine.over2, 0.5);
-    EXPECT_GT(e.affine.max, 150);
+    EXPECT_GT(e.affine.meanError, 20.0);
+    EXPECT_GT(e.affine.over2Lsb, 0.5);
+    EXPECT_GT(e.affine.maxError, 150.0);
     for (const Error& sub : {e.sub8, e.sub16, e.sub32}) {
-        EXPECT_LE(sub.max, 1);
-        EXPECT_EQ(sub.over2, 0.0);
+        EXPECT_LE(sub.maxError, 1.0);
+        EXPECT_EQ(sub.over2Lsb, 0.0);
     }
 }
 
@@ -127,8 +97,8 @@ TEST_F(InterpolationAccuracy, RolledViewSubdividedLiesBetween) {
     const double roll = 40.0 * 3.14159265358979 / 180.0;
     cam.up = std::cos(roll) * up + std::sin(roll) * side;
     const Errors e = measureAll(scene, "rolled");
-    EXPECT_LE(e.perspective.max, 1);
-    EXPECT_GT(e.affine.mean, 20.0);
+    EXPECT_LE(e.perspective.maxError, 1.0);
+    EXPECT_GT(e.affine.meanError, 20.0);
     EXPECT_LT(e.perspective.rmse, e.sub8.rmse);
     EXPECT_LT(e.sub8.rmse, e.sub16.rmse);
     EXPECT_LT(e.sub16.rmse, e.sub32.rmse);

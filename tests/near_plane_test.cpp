@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "facet/evaluation/reference_compare.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
-#include "image_compare.hpp"
 #include "shared_data.hpp"
 
 namespace facet {
@@ -53,7 +53,7 @@ TEST(NearPlane, CameraThroughTheBunnyStaysFiniteAndMatchesTheReference) {
                 ASSERT_TRUE(d == kEmptyDepth || d >= 0.999f * near)
                     << "frame " << frame << " depth " << d;
             const reference::Image ref = reference::render(scene, s);
-            const test::Comparison c = test::compare(fb, ref, s.shader, s.background);
+            const ReferenceDiff c = compareWithReference(fb, ref, s.shader, s.background);
             EXPECT_EQ(c.coverageDiffers, 0u)
                 << "frame " << frame << " " << toString(interp) << c.examples;
             EXPECT_LE(c.maxColorDiff, 1) << "frame " << frame << " " << toString(interp);

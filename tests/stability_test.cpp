@@ -32,12 +32,12 @@
 #include "accuracy/sweep_highlights.hpp"
 #include "accuracy/sweep_view_angle.hpp"
 #include "facet/camera.hpp"
+#include "facet/evaluation/reference_compare.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
-#include "image_compare.hpp"
 #include "shared_data.hpp"
 
 namespace facet {
@@ -344,11 +344,9 @@ RenderStats expectMatchesReference(Renderer& renderer, const Scene& scene, const
     const Clock::time_point t0 = Clock::now();
     const RenderStats stats = renderer.render(scene, s, fb);
     EXPECT_LT(msSince(t0), kCaseBudgetMs) << label;
-    std::size_t nan = 0;
-    for (float d : fb.depth) nan += std::isnan(d);
-    EXPECT_EQ(nan, 0u) << label;
     const reference::Image ref = reference::render(scene, s);
-    const test::Comparison c = test::compare(fb, ref, s.shader, s.background);
+    const ReferenceDiff c = compareWithReference(fb, ref, s.shader, s.background);
+    EXPECT_EQ(c.nanDepth, 0u) << label;
     EXPECT_EQ(c.coverageDiffers, 0u) << label << c.examples;
     EXPECT_LE(c.maxColorDiff, 1) << label << c.examples;
     return stats;

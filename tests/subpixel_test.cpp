@@ -268,7 +268,7 @@ const std::vector<app::SubPixelPoint>& quickSweep() {
                 "[subpixel] %-6s %d bits %dx%d: covered %zu, differ %zu (ambiguous %zu), "
                 "cracks %zu, layers changed %zu, rmse %.3f, >2 LSB %.2f%%, %.2f ms\n",
                 q.scene.c_str(), q.bits, q.width, q.height, q.covered, q.differ, q.differAmbiguous,
-                q.cracks, q.layersChanged, q.error.rmse, 100.0 * q.error.over2Lsb, q.medianMs);
+                q.cracks, q.layersChanged, q.error.rmse, 100.0 * q.error.over2Lsb, q.times.median);
         return p;
     }();
     return points;
@@ -309,7 +309,7 @@ TEST(SubPixelSweep, CoverageErrorFallsWithMoreBits) {
         EXPECT_LT(b6.differ, b4.covered / 40) << scene;
         // The picture barely changes against the ground truth: silhouette aliasing dominates.
         EXPECT_LT(std::abs(b4.error.rmse - b8.error.rmse), 0.1 * b8.error.rmse + 0.05) << scene;
-        EXPECT_TRUE(std::isfinite(b4.medianMs) && b4.medianMs > 0.0) << scene;
+        EXPECT_TRUE(std::isfinite(b4.times.median) && b4.times.median > 0.0) << scene;
     }
 }
 

@@ -16,8 +16,8 @@
 
 #include "accuracy/accuracy_methods.hpp"
 #include "accuracy_job.hpp"
+#include "facet/evaluation/ground_truth.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/ground_truth.hpp"
 #include "facet/reference.hpp"
 #include "facet/texture.hpp"
 #include "world_at.hpp"
@@ -186,7 +186,8 @@ TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     for (const char* m : {"affine", "subdivided:8", "subdivided:16", "subdivided:32", "perspective",
                           "nearest", "bilinear", "trilinear", "1x1", "2x2", "4x4"}) {
         const AccuracyRow& r = row(*report, m);
-        EXPECT_GT(r.medianMs, 0.0) << m;
+        EXPECT_GT(r.times.median, 0.0) << m;
+        EXPECT_EQ(r.times.frames, 2) << m;
         EXPECT_EQ(r.error.pixels, 96u * 64u) << m;
     }
     const double affine = row(*report, "affine").error.rmse;
@@ -196,7 +197,7 @@ TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     EXPECT_TRUE(std::any_of(report->rows.begin(), report->rows.end(),
                             [](const AccuracyRow& r) { return r.pareto; }));
     // Affine and bilinear are both the user's settings: measured once, the same numbers.
-    EXPECT_EQ(row(*report, "affine").medianMs, row(*report, "bilinear").medianMs);
+    EXPECT_EQ(row(*report, "affine").times, row(*report, "bilinear").times);
     EXPECT_EQ(row(*report, "affine").error.rmse, row(*report, "bilinear").error.rmse);
     EXPECT_EQ(row(*report, "affine").pareto, row(*report, "bilinear").pareto);
     const std::string state = accuracyStateText(report.get());
@@ -302,7 +303,7 @@ TEST(AccuracyJob, AReportGoesStaleWhenTheViewOrSettingsChange) {
 TEST(AccuracyJob, TheParetoFrontIsWhatNothingBeatsOnBoth) {
     std::vector<AccuracyRow> rows(7);
     auto set = [&](std::size_t i, double ms, double rmse) {
-        rows[i].medianMs = ms;
+        rows[i].times.median = ms;
         rows[i].error.rmse = rmse;
     };
     set(0, 1.0, 5.0);     // fastest

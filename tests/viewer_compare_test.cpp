@@ -10,7 +10,7 @@
 
 #include "compare.hpp"
 #include "facet/colormap.hpp"
-#include "facet/image_diff.hpp"
+#include "facet/evaluation/image_diff.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "render_worker.hpp"

@@ -18,8 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include "facet/evaluation/image_diff.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/image_diff.hpp"
 #include "facet/texture.hpp"
 #include "state_file.hpp"
 

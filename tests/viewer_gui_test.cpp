@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "facet/evaluation/image_diff.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/image_diff.hpp"
 #include "facet/scene_io.hpp"
 #include "viewer_gui_support.hpp"
 

@@ -14,8 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "facet/evaluation/image_diff.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/image_diff.hpp"
 #include "viewer_gui_support.hpp"
 
 namespace {
@@ -28,22 +28,11 @@ using namespace viewer_gui;
 struct Agreement {
     std::size_t covered = 0;          ///< pixels the first picture drew
     std::size_t coverageDiffers = 0;  ///< drawn in one picture only
-    std::size_t both = 0;             ///< drawn in both
-    std::array<std::size_t, 256> count{};
+    DiffHistogram both;               ///< the colour differences of the pixels both drew
 
     double coverageShare() const {
         return static_cast<double>(coverageDiffers) /
                static_cast<double>(std::max<std::size_t>(1, covered));
-    }
-    int max() const {
-        for (int d = 255; d > 0; --d)
-            if (count[static_cast<std::size_t>(d)]) return d;
-        return 0;
-    }
-    double overOne() const {
-        std::size_t n = 0;
-        for (std::size_t d = 2; d < 256; ++d) n += count[d];
-        return static_cast<double>(n) / static_cast<double>(std::max<std::size_t>(1, both));
     }
 };
 
@@ -59,8 +48,7 @@ Agreement agreement(const Framebuffer& a, const Framebuffer& b, int x0, int x1) 
             if (ca != cb) {
                 ++r.coverageDiffers;
             } else if (ca) {
-                ++r.both;
-                ++r.count[static_cast<std::size_t>(pixelError(pa, pb))];
+                r.both.add(pixelError(pa, pb));
             }
         }
     return r;
@@ -77,8 +65,8 @@ void expectTwinAgrees(const Framebuffer& cpu, const Framebuffer& gl, int x0, int
     // Non-empty: the knot covers about a quarter of the frame.
     EXPECT_GT(a.covered, static_cast<std::size_t>(0.1 * (x1 - x0) * cpu.height));
     EXPECT_LE(a.coverageShare(), 1e-3) << a.coverageDiffers << " of " << a.covered;
-    EXPECT_LE(a.max(), 2);
-    EXPECT_LE(a.overOne(), 2e-4);
+    EXPECT_LE(a.both.max(), 2);
+    EXPECT_LE(a.both.shareAbove(1), 2e-4);
 }
 
 /// The shaders folder with `file` broken, for $FACET_SHADERS.

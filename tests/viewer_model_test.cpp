@@ -445,7 +445,7 @@ TEST(ViewerStats, MediansAndTheHistoryWindow) {
     FrameHistory h;
     h.window = 4;
     for (int i = 1; i <= 9; ++i) {
-        FrameTimes t;
+        StageTimes t;
         t.render = i;
         t.total = 10.0 * i;
         h.push(t);
@@ -460,7 +460,7 @@ TEST(ViewerStats, MediansAndTheHistoryWindow) {
     EXPECT_NE(line.find("median 20.0 fps"), std::string::npos) << line;  // 50 ms
     EXPECT_NE(line.find("over 9 frames"), std::string::npos) << line;
     h.capacity = 4;
-    for (int i = 0; i < 10; ++i) h.push(FrameTimes{});
+    for (int i = 0; i < 10; ++i) h.push(StageTimes{});
     EXPECT_LE(h.frames.size(), 4u);
     EXPECT_EQ(h.dropped + h.frames.size(), 19u);
 }
@@ -468,11 +468,11 @@ TEST(ViewerStats, MediansAndTheHistoryWindow) {
 TEST(ViewerStats, EachRenderersMedianCountsOnlyTheFramesItRan) {
     // Three CPU frames, then the twin alone for four, then both for two.
     FrameHistory h;
-    for (int i = 0; i < 3; ++i) h.push(FrameTimes{.render = 10.0, .total = 20.0});
+    for (int i = 0; i < 3; ++i) h.push(StageTimes{.render = 10.0, .total = 20.0});
     for (int i = 0; i < 4; ++i)
-        h.push(FrameTimes{.twin = 6.0, .twinUpload = 1.0, .twinDraw = 4.0, .twinReadback = 1.0});
-    for (int i = 0; i < 2; ++i) h.push(FrameTimes{.render = 12.0, .twin = 8.0, .compare = 2.0});
-    const FrameTimes m = h.median();
+        h.push(StageTimes{.twin = 6.0, .twinUpload = 1.0, .twinDraw = 4.0, .twinReadback = 1.0});
+    for (int i = 0; i < 2; ++i) h.push(StageTimes{.render = 12.0, .twin = 8.0, .compare = 2.0});
+    const StageTimes m = h.median();
     EXPECT_DOUBLE_EQ(m.render, 10.0);  // the 5 frames it ran: 10 10 10 12 12
     EXPECT_DOUBLE_EQ(m.twin, 6.0);     // 6 6 6 6 8 8
     EXPECT_DOUBLE_EQ(m.twinDraw, 4.0);

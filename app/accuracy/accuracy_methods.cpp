@@ -1,7 +1,5 @@
 #include "accuracy_methods.hpp"
 
-#include "frame_times.hpp"
-
 #include <algorithm>
 #include <chrono>
 
@@ -66,14 +64,6 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSett
             [n](RenderSettings& s) { s.supersample = n; });
     }
     return methods;
-}
-
-void summarise(std::vector<double> ms, AccuracyResult& r) {
-    const FrameTimes t = summarize(std::move(ms));
-    r.medianMs = t.median;
-    r.minMs = t.min;
-    r.maxMs = t.max;
-    r.frames = t.frames;
 }
 
 std::vector<std::vector<double>> timeMethods(Renderer& renderer, const Scene& scene,

@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "facet/evaluation/frame_times.hpp"
+#include "facet/evaluation/image_metrics.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/ground_truth.hpp"
 #include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
@@ -45,13 +46,9 @@ struct AccuracyResult {
     std::string axis;
     std::string method;
     int width = 0, height = 0;
-    double medianMs = 0.0, minMs = 0.0, maxMs = 0.0;
-    int frames = 0;
+    FrameTimes times;  ///< the engine's frame times (ms)
     ImageError error;
 };
-
-/// Fills the median, min, max and count of a method's frame times (ms, at least one).
-void summarise(std::vector<double> ms, AccuracyResult& r);
 
 /// Times every method round-robin: `warmup` untimed frames each, then per round one timed frame
 /// each, so a stretch when another process holds the cores slows every method alike instead of

@@ -25,8 +25,8 @@ std::string fmt(const char* format, double v) {
 /// kept when it is more accurate than every faster one.
 std::vector<const AccuracyResult*> paretoFront(std::vector<const AccuracyResult*> rows) {
     std::sort(rows.begin(), rows.end(), [](const auto* a, const auto* b) {
-        return a->medianMs != b->medianMs ? a->medianMs < b->medianMs
-                                          : a->error.rmse < b->error.rmse;
+        return a->times.median != b->times.median ? a->times.median < b->times.median
+                                                  : a->error.rmse < b->error.rmse;
     });
     std::vector<const AccuracyResult*> front;
     for (const AccuracyResult* r : rows) {
@@ -45,8 +45,8 @@ std::string accuracyTable(const std::vector<AccuracyResult>& results) {
     out += line;
     for (const AccuracyResult& r : results) {
         std::snprintf(line, sizeof line, "%-24s %-9s %-14s %9.3f %9.3f %8.2f %8.1f %8.2f %9.3f\n",
-                      r.scene.c_str(), r.axis.c_str(), r.method.c_str(), r.medianMs, r.error.rmse,
-                      r.error.psnr, r.error.maxError, 100.0 * r.error.over2Lsb,
+                      r.scene.c_str(), r.axis.c_str(), r.method.c_str(), r.times.median,
+                      r.error.rmse, r.error.psnr, r.error.maxError, 100.0 * r.error.over2Lsb,
                       r.error.interiorRmse);
         out += line;
     }
@@ -72,11 +72,11 @@ Status writeAccuracyCsv(const std::string& path, const MachineInfo& machine, int
            "over_2lsb_percent,interior_rmse\n";
     for (const AccuracyResult& r : results) {
         out << r.scene << "," << r.axis << "," << r.method << "," << r.width << "," << r.height
-            << "," << r.frames << "," << fmt("%.4f", r.medianMs) << "," << fmt("%.4f", r.minMs)
-            << "," << fmt("%.4f", r.maxMs) << "," << fmt("%.4f", r.error.rmse) << ","
-            << fmt("%.3f", r.error.psnr) << "," << fmt("%.2f", r.error.maxError) << ","
-            << fmt("%.3f", 100.0 * r.error.over2Lsb) << "," << fmt("%.4f", r.error.interiorRmse)
-            << "\n";
+            << "," << r.times.frames << "," << fmt("%.4f", r.times.median) << ","
+            << fmt("%.4f", r.times.min) << "," << fmt("%.4f", r.times.max) << ","
+            << fmt("%.4f", r.error.rmse) << "," << fmt("%.3f", r.error.psnr) << ","
+            << fmt("%.2f", r.error.maxError) << "," << fmt("%.3f", 100.0 * r.error.over2Lsb) << ","
+            << fmt("%.4f", r.error.interiorRmse) << "\n";
     }
     out.close();
     if (!out) return Error{{path, 0}, "write failed"};
@@ -100,7 +100,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
     for (const std::string& s : scenes) {
         const std::vector<const AccuracyResult*>& rows = byScene[s];
         for (const AccuracyResult* r : rows)
-            data += fmt("%.6g ", r->medianMs) + fmt("%.6g\n", r->error.rmse);
+            data += fmt("%.6g ", r->times.median) + fmt("%.6g\n", r->error.rmse);
         data += "\n\n";
         double lo = rows.front()->error.rmse, hi = lo;
         for (const AccuracyResult* r : rows) {
@@ -110,7 +110,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
         std::vector<std::pair<const AccuracyResult*, std::string>> labels;
         for (const AccuracyResult* r : rows) {
             auto near = std::find_if(labels.begin(), labels.end(), [&](const auto& l) {
-                return std::abs(std::log(r->medianMs / l.first->medianMs)) < 0.15 &&
+                return std::abs(std::log(r->times.median / l.first->times.median)) < 0.15 &&
                        std::abs(r->error.rmse - l.first->error.rmse) <= 0.03 * (hi - lo);
             });
             if (near == labels.end())
@@ -119,11 +119,11 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                 near->second += ", " + r->method;
         }
         for (const auto& [at, text] : labels)
-            data +=
-                fmt("%.6g ", at->medianMs) + fmt("%.6g ", at->error.rmse) + "\"" + text + "\"\n";
+            data += fmt("%.6g ", at->times.median) + fmt("%.6g ", at->error.rmse) + "\"" + text +
+                    "\"\n";
         data += "\n\n";
         for (const AccuracyResult* r : paretoFront(byScene[s]))
-            data += fmt("%.6g ", r->medianMs) + fmt("%.6g\n", r->error.rmse);
+            data += fmt("%.6g ", r->times.median) + fmt("%.6g\n", r->error.rmse);
         data += "\n\n";
     }
     const std::string stem =

@@ -1,6 +1,6 @@
 #include "sweep_camera.hpp"
 
-#include "frame_times.hpp"
+#include "facet/evaluation/frame_times.hpp"
 
 #include <algorithm>
 #include <chrono>

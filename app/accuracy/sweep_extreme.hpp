@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "reference_compare.hpp"
+#include "facet/evaluation/reference_compare.hpp"
 #include "sweep_table.hpp"
 
 namespace facet::app {

@@ -2,14 +2,15 @@
 
 #include "sweep_highlights.hpp"
 
-#include "frame_times.hpp"
+#include "facet/evaluation/frame_times.hpp"
 
 #include <algorithm>
 
 #include <glm/geometric.hpp>
 
+#include "facet/evaluation/ground_truth.hpp"
+#include "facet/evaluation/image_metrics.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/ground_truth.hpp"
 #include "facet/procedural.hpp"
 #include "facet/render.hpp"
 

@@ -258,15 +258,8 @@ void sweepScene(const std::string& name, const Scene& scene, const SweepOptions&
     // Round-robin, so a busy moment slows every grid alike.
     const std::vector<std::vector<double>> ms =
         timeMethods(renderer, scene, methods, std::max(1, options.frames), 1, frame);
-    for (std::size_t k = 0; k < methods.size(); ++k) {
-        AccuracyResult r;
-        summarise(ms[k], r);
-        SubPixelPoint& p = out[out.size() - methods.size() + k];
-        p.medianMs = r.medianMs;
-        p.minMs = r.minMs;
-        p.maxMs = r.maxMs;
-        p.frames = r.frames;
-    }
+    for (std::size_t k = 0; k < methods.size(); ++k)
+        out[out.size() - methods.size() + k].times = summarize(ms[k]);
 }
 
 }  // namespace
@@ -339,7 +332,7 @@ SweepTable subPixelTable(const std::vector<SubPixelPoint>& points) {
                std::to_string(p.triangles), std::to_string(p.covered), std::to_string(p.differ),
                std::to_string(p.differAmbiguous), cell(pct), std::to_string(p.cracks),
                std::to_string(p.layersChanged), cell(p.error.rmse), cell(100.0 * p.error.over2Lsb),
-               cell(p.medianMs), cell(p.minMs), cell(p.maxMs)});
+               cell(p.times.median), cell(p.times.min), cell(p.times.max)});
     }
     return t;
 }

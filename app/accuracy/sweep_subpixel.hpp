@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "facet/ground_truth.hpp"
+#include "facet/evaluation/frame_times.hpp"
+#include "facet/evaluation/ground_truth.hpp"
+#include "facet/evaluation/image_metrics.hpp"
 #include "facet/scene.hpp"
 #include "sweep_table.hpp"
 
@@ -32,8 +34,7 @@ struct SubPixelPoint {
     /// triangle flipped) or a silhouette moving, never a crack (cracks would show above).
     std::size_t layersChanged = 0;
     ImageError error;  ///< the scene's picture (baseSettings()) against its ground truth
-    double medianMs = 0.0, minMs = 0.0, maxMs = 0.0;  ///< Renderer::render, whole frame, one thread
-    int frames = 0;
+    FrameTimes times;  ///< Renderer::render, whole frame, one thread (ms)
 };
 
 /// The grids swept: 2…8 bits, or 4, 6, 8 in quick mode.

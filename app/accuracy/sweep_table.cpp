@@ -20,6 +20,20 @@ std::string cell(double v) {
     return buf;
 }
 
+std::vector<std::string> referenceDiffColumns() {
+    return {"fast_covered",  "ref_covered",    "ambiguous",
+            "coverage_diff", "max_color_diff", "nan_depth"};
+}
+
+std::vector<std::string> referenceDiffCells(const ReferenceDiff& d) {
+    return {cell(static_cast<double>(d.fastCovered)),
+            cell(static_cast<double>(d.refCovered)),
+            cell(static_cast<double>(d.ambiguous)),
+            cell(static_cast<double>(d.coverageDiffers)),
+            cell(d.maxColorDiff),
+            cell(static_cast<double>(d.nanDepth))};
+}
+
 Status writeSweepCsv(const std::string& path, const SweepTable& table,
                      const std::vector<std::string>& notes) {
     std::ofstream out(path);

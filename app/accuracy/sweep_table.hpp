@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "facet/evaluation/reference_compare.hpp"
 
 namespace facet::app {
 
@@ -40,6 +41,13 @@ struct SweepTable {
 
 /// A number as a CSV cell: %.9g; NaN as "nan", infinities as "inf" / "-inf".
 std::string cell(double v);
+
+/// The sweep tables' columns for a ReferenceDiff: fast_covered, ref_covered, ambiguous,
+/// coverage_diff, max_color_diff, nan_depth.
+std::vector<std::string> referenceDiffColumns();
+
+/// The cells of those columns for `d`.
+std::vector<std::string> referenceDiffCells(const ReferenceDiff& d);
 
 /// Writes the table: `# ` comment lines (`notes`, one per element), the header, the rows.
 Status writeSweepCsv(const std::string& path, const SweepTable& table,

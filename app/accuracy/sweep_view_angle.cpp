@@ -10,7 +10,7 @@
 
 #include "sweep_view_angle.hpp"
 
-#include "frame_times.hpp"
+#include "facet/evaluation/frame_times.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,9 @@
 #include <memory>
 #include <numbers>
 
+#include "facet/evaluation/ground_truth.hpp"
+#include "facet/evaluation/image_metrics.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/ground_truth.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/texture.hpp"

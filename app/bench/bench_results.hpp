@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/frame_times.hpp"
+#include "facet/evaluation/frame_times.hpp"
 
 namespace facet::app {
 

@@ -8,7 +8,6 @@
 #include <sstream>
 #include <utility>
 
-#include "accuracy/frame_times.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/render.hpp"
 #include "frame_stats.hpp"
@@ -64,8 +63,10 @@ void markPareto(std::vector<AccuracyRow>& rows) {
             // RMSEs this close are equally accurate: a last-digit difference between two
             // renders is no accuracy anyone sees, and should not keep a slower method on.
             const double tie = kParetoRmseTie * std::max(o.error.rmse, r.error.rmse);
-            const bool noWorse = o.medianMs <= r.medianMs && o.error.rmse <= r.error.rmse + tie;
-            const bool better = o.medianMs < r.medianMs || o.error.rmse < r.error.rmse - tie;
+            const bool noWorse =
+                o.times.median <= r.times.median && o.error.rmse <= r.error.rmse + tie;
+            const bool better =
+                o.times.median < r.times.median || o.error.rmse < r.error.rmse - tie;
             return noWorse && better;
         });
     }
@@ -94,7 +95,7 @@ std::string accuracyStateText(const AccuracyReport* report) {
     for (const AccuracyRow& r : report->rows) {
         char buf[256];
         std::snprintf(buf, sizeof buf, "accuracy_%s_%s %.4f %.4f %.3f %.1f %.5f %d\n",
-                      r.axis.c_str(), r.method.c_str(), r.medianMs, r.error.rmse, r.error.psnr,
+                      r.axis.c_str(), r.method.c_str(), r.times.median, r.error.rmse, r.error.psnr,
                       r.error.maxError, r.error.over2Lsb, r.pareto ? 1 : 0);
         s << buf;
     }
@@ -234,9 +235,8 @@ void AccuracyJob::run(const Request& request) {
         }
         for (std::size_t k = 0; k < methods.size(); ++k) {
             const app::AccuracyMethod& m = methods[k];
-            const app::FrameTimes t = app::summarize(times[measuredAs[k]]);
-            report->rows.push_back(
-                {m.axis, m.name, m.settings, t.median, t.min, t.max, errors[measuredAs[k]], false});
+            report->rows.push_back({m.axis, m.name, m.settings, summarize(times[measuredAs[k]]),
+                                    errors[measuredAs[k]], false});
         }
         markPareto(report->rows);
         std::lock_guard lock(mutex_);

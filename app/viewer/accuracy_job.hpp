@@ -18,7 +18,9 @@
 #include <vector>
 
 #include "accuracy/accuracy_methods.hpp"
-#include "facet/ground_truth.hpp"
+#include "facet/evaluation/frame_times.hpp"
+#include "facet/evaluation/ground_truth.hpp"
+#include "facet/evaluation/image_metrics.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
@@ -58,9 +60,7 @@ struct AccuracyRow {
     std::string axis;
     std::string method;
     RenderSettings settings;  ///< the method's (Solid)
-    double medianMs = 0.0;
-    double minMs = 0.0;
-    double maxMs = 0.0;
+    FrameTimes times;         ///< the method's frame times (ms)
     ImageError error;
     bool pareto = false;  ///< no other method is both faster and more accurate
 };

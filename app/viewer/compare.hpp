@@ -3,8 +3,8 @@
 // on the left and perspective-correct on the right by default), shown side by side across a
 // movable divider, or as a heat map of their per-pixel difference, with the numbers.
 
+#include "facet/evaluation/image_diff.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/image_diff.hpp"
 #include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"

@@ -18,7 +18,7 @@ inline double ms(Clock::time_point a, Clock::time_point b) {
 }
 
 /// Milliseconds one frame spent in each stage.
-struct FrameTimes {
+struct StageTimes {
     double render = 0.0;  ///< engine: Renderer::render (both sides in Compare); 0: not run
     double twin = 0.0;    ///< OpenGL twin: GlRenderer::render, glFinish and readback; 0: not run
     double twinUpload = 0.0;    ///< ...of which preparing and uploading vertices and texture
@@ -37,19 +37,19 @@ struct FrameTimes {
 struct FrameHistory {
     std::size_t window = 240;        ///< frames shown by the plot
     std::size_t capacity = 100000;   ///< frames kept; beyond it the older half is dropped
-    std::vector<FrameTimes> frames;  ///< the frames kept, oldest first
+    std::vector<StageTimes> frames;  ///< the frames kept, oldest first
     std::size_t dropped = 0;         ///< frames dropped from the front of `frames`
     std::vector<float> plot;         ///< last `window` totals, oldest first
 
     /// Appends a frame; plot keeps its length once full (shifting is cheap at this size).
-    void push(const FrameTimes& t);
+    void push(const StageTimes& t);
 
     /// Per-stage medians over the frames after the first `skip` ever pushed; zero when none.
     /// render and the twin's fields count only the frames in which that renderer ran.
-    FrameTimes median(std::size_t skip = 0) const;
+    StageTimes median(std::size_t skip = 0) const;
 
     /// Per-stage medians over the last `count` frames.
-    FrameTimes recentMedian(std::size_t count) const;
+    StageTimes recentMedian(std::size_t count) const;
 };
 
 /// One line: "median 123.4 fps (8.10 ms: render 6.00, twin 0.00, compare 0.00, upload 0.20,

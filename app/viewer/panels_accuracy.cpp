@@ -51,7 +51,7 @@ int methodTable(const AccuracyReport& report, const RenderSettings& current) {
         ImGui::TextUnformatted(r.axis.c_str());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(r.method.c_str());
-        cell("%.2f", r.medianMs);
+        cell("%.2f", r.times.median);
         cell("%.3f", r.error.rmse);
         cell("%.1f", r.error.psnr);
         cell("%.0f", r.error.maxError);

@@ -42,7 +42,7 @@ void statsWindow(App& app) {
         return;
     }
     // Medians over the last second or so: steadier than the last frame, still current.
-    const FrameTimes m = app.history.recentMedian(60);
+    const StageTimes m = app.history.recentMedian(60);
     ImGui::Text("%.1f fps, %.2f ms a frame (median of 60)", m.total > 0 ? 1000.0 / m.total : 0.0,
                 m.total);
     const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);

@@ -74,7 +74,7 @@ struct App {
     RendererChoice lastChoice = RendererChoice::Cpu;  ///< the previous frame's, to count switches
     bool engineFresh = false;  ///< `display` is the engine's frame of the previous frame's state
     FrameHistory history;
-    FrameTimes lastTimes;  ///< the previous frame's split, shown by the Stats panel
+    StageTimes lastTimes;  ///< the previous frame's split, shown by the Stats panel
     UiState ui;
     DragState drag;
     KeyEvents keys;

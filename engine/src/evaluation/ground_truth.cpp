@@ -14,7 +14,7 @@
 // Colours stay in double until the average, and are clamped per sub-sample first, as the
 // display would clamp each of them; nothing is rounded to 8 bits.
 
-#include "facet/ground_truth.hpp"
+#include "facet/evaluation/ground_truth.hpp"
 
 #include <algorithm>
 #include <cmath>

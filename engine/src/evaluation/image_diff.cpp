@@ -1,9 +1,12 @@
-#include "facet/image_diff.hpp"
+// Frame against frame (image_diff.hpp).
+
+#include "facet/evaluation/image_diff.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <numeric>
 
 #include "facet/colormap.hpp"
 
@@ -60,6 +63,37 @@ ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* he
     }
     for (std::size_t i = 0; i < n; ++i) errors[i] = lut[errors[i]];
     return d;
+}
+
+void DiffHistogram::add(int error) {
+    ++count[static_cast<std::size_t>(std::clamp(error, 0, 255))];
+    ++total;
+}
+
+int DiffHistogram::percentile(double fraction) const {
+    const auto target = static_cast<std::size_t>(std::ceil(fraction * static_cast<double>(total)));
+    std::size_t seen = 0;
+    for (int e = 0; e < 256; ++e) {
+        seen += count[static_cast<std::size_t>(e)];
+        if (seen >= target && seen > 0) return e;
+    }
+    return 0;
+}
+
+int DiffHistogram::max() const {
+    for (int e = 255; e > 0; --e)
+        if (count[static_cast<std::size_t>(e)] > 0) return e;
+    return 0;
+}
+
+std::size_t DiffHistogram::above(int error) const {
+    const std::size_t from = static_cast<std::size_t>(std::clamp(error + 1, 0, 256));
+    return std::accumulate(count.begin() + static_cast<std::ptrdiff_t>(from), count.end(),
+                           std::size_t{0});
+}
+
+double DiffHistogram::shareAbove(int error) const {
+    return static_cast<double>(above(error)) / static_cast<double>(std::max<std::size_t>(1, total));
 }
 
 }  // namespace facet

@@ -1,6 +1,10 @@
-// Error metrics of an 8-bit image against a ground truth in linear float (ground_truth.hpp).
-// Everything is in 8-bit steps (LSB): a rounding error alone is at most half a step, so a
-// perfect renderer scores RMSE about 0.29 and max 0.5, never 0.
+// Error metrics of an 8-bit image against a truth (image_metrics.hpp). Everything is in 8-bit
+// steps (LSB): against a ground truth in linear float, a rounding error alone is at most half a
+// step, so a perfect renderer scores RMSE about 0.29 and max 0.5, never 0.
+
+#include "facet/evaluation/image_metrics.hpp"
+
+#include "facet/evaluation/ground_truth.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,46 +12,77 @@
 #include <cstddef>
 #include <limits>
 
-#include "facet/ground_truth.hpp"
-
 namespace facet {
 namespace {
 
-// Sum of the squared channel differences of one pixel, in 8-bit steps; `worst` gets the largest.
-double squaredError(std::uint32_t p, const glm::vec3& truth, double& worst) {
-    const std::array<double, 3> got{static_cast<double>(p & 0xFF),
-                                    static_cast<double>((p >> 8) & 0xFF),
-                                    static_cast<double>((p >> 16) & 0xFF)};
-    double sum = 0.0;
-    worst = 0.0;
-    for (int c = 0; c < 3; ++c) {
-        const double d = std::abs(got[c] - 255.0 * static_cast<double>(truth[c]));
-        sum += d * d;
-        worst = std::max(worst, d);
-    }
-    return sum;
+/// The R, G, B bytes of a packed pixel.
+std::array<double, 3> channels(std::uint32_t p) {
+    return {static_cast<double>(p & 0xFF), static_cast<double>((p >> 8) & 0xFF),
+            static_cast<double>((p >> 16) & 0xFF)};
 }
+
+/// A linear colour in 8-bit steps, unrounded.
+std::array<double, 3> channels(const glm::vec3& c) {
+    return {255.0 * static_cast<double>(c[0]), 255.0 * static_cast<double>(c[1]),
+            255.0 * static_cast<double>(c[2])};
+}
+
+/// Sums over the pixels compared so far.
+struct Totals {
+    double sumSquares = 0.0;
+    double sumAbs = 0.0;
+    double maxError = 0.0;
+    std::size_t over2 = 0;
+    std::size_t pixels = 0;
+
+    /// Adds one pixel; returns its sum of squared channel differences.
+    double add(const std::array<double, 3>& got, const std::array<double, 3>& truth) {
+        double squares = 0.0, worst = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double d = std::abs(got[c] - truth[c]);
+            squares += d * d;
+            sumAbs += d;
+            worst = std::max(worst, d);
+        }
+        sumSquares += squares;
+        maxError = std::max(maxError, worst);
+        over2 += worst > 2.0 ? 1 : 0;
+        ++pixels;
+        return squares;
+    }
+
+    ImageError result() const {
+        ImageError e;
+        e.pixels = pixels;
+        e.maxError = maxError;
+        if (pixels == 0) return e;
+        const double channelCount = 3.0 * static_cast<double>(pixels);
+        e.rmse = std::sqrt(sumSquares / channelCount);
+        e.meanError = sumAbs / channelCount;
+        e.psnr = e.rmse > 0.0 ? 20.0 * std::log10(255.0 / e.rmse)
+                              : std::numeric_limits<double>::infinity();
+        e.over2Lsb = static_cast<double>(over2) / static_cast<double>(pixels);
+        return e;
+    }
+};
 
 }  // namespace
 
 ImageError measureError(std::span<const std::uint32_t> rgba, std::span<const glm::vec3> truth) {
-    ImageError e;
-    if (rgba.size() != truth.size()) return e;
-    double sumSquares = 0.0;
-    std::size_t over = 0;
-    for (std::size_t i = 0; i < rgba.size(); ++i) {
-        double worst = 0.0;
-        sumSquares += squaredError(rgba[i], truth[i], worst);
-        e.maxError = std::max(e.maxError, worst);
-        over += worst > 2.0 ? 1 : 0;
-    }
-    e.pixels = rgba.size();
-    if (e.pixels == 0) return e;
-    e.rmse = std::sqrt(sumSquares / (3.0 * static_cast<double>(e.pixels)));
-    e.psnr =
-        e.rmse > 0.0 ? 20.0 * std::log10(255.0 / e.rmse) : std::numeric_limits<double>::infinity();
-    e.over2Lsb = static_cast<double>(over) / static_cast<double>(e.pixels);
-    return e;
+    if (rgba.size() != truth.size()) return {};
+    Totals t;
+    for (std::size_t i = 0; i < rgba.size(); ++i) t.add(channels(rgba[i]), channels(truth[i]));
+    return t.result();
+}
+
+ImageError measureError(std::span<const std::uint32_t> rgba, std::span<const std::uint32_t> truth,
+                        std::span<const std::uint8_t> include) {
+    if (rgba.size() != truth.size() || (!include.empty() && include.size() != rgba.size()))
+        return {};
+    Totals t;
+    for (std::size_t i = 0; i < rgba.size(); ++i)
+        if (include.empty() || include[i]) t.add(channels(rgba[i]), channels(truth[i]));
+    return t.result();
 }
 
 ImageError measureError(const Framebuffer& frame, const GroundTruth& truth) {
@@ -55,15 +90,14 @@ ImageError measureError(const Framebuffer& frame, const GroundTruth& truth) {
         frame.color.size() != truth.coverage.size())
         return {};
     ImageError e = measureError(frame.color, truth.color);
-    double sumSquares = 0.0;
-    for (std::size_t i = 0; i < frame.color.size(); ++i) {
-        if (truth.coverage[i] < 1.0f) continue;
-        double worst = 0.0;
-        sumSquares += squaredError(frame.color[i], truth.color[i], worst);
-        ++e.interiorPixels;
-    }
-    if (e.interiorPixels > 0)
-        e.interiorRmse = std::sqrt(sumSquares / (3.0 * static_cast<double>(e.interiorPixels)));
+    Totals interior;
+    for (std::size_t i = 0; i < frame.color.size(); ++i)
+        if (!(truth.coverage[i] < 1.0f))
+            interior.add(channels(frame.color[i]), channels(truth.color[i]));
+    e.interiorPixels = interior.pixels;
+    if (interior.pixels > 0)
+        e.interiorRmse =
+            std::sqrt(interior.sumSquares / (3.0 * static_cast<double>(interior.pixels)));
     return e;
 }
 

@@ -2,17 +2,15 @@
 // Ground truth: what a pixel should be when it is the average of the scene over its square, not
 // a single sample at its centre. Built on the reference path (reference.hpp), which stays the
 // oracle for the fast path's rules; this is the yardstick for how far from the ideal each of the
-// fast path's approximations (affine, subdivided, nearest, Gouraud...) lands.
+// fast path's approximations (affine, subdivided, nearest, Gouraud...) lands, measured by
+// image_metrics.hpp.
 
 #include <cstddef>
-#include <cstdint>
 #include <functional>
-#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
-#include "facet/framebuffer.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
@@ -48,27 +46,5 @@ RenderSettings groundTruthSettings(const RenderSettings& settings);
 GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings,
                               int samples = kDefaultGroundTruthSamples,
                               const GroundTruthProgress& progress = {});
-
-/// How far an 8-bit image is from a ground truth, in 8-bit steps (1 LSB = 1/255).
-struct ImageError {
-    double rmse = 0.0;       ///< root mean square over every channel of every pixel
-    double psnr = 0.0;       ///< 20·log10(255 / rmse) in dB; +inf when rmse is 0
-    double maxError = 0.0;   ///< largest channel difference
-    double over2Lsb = 0.0;   ///< share (0…1) of pixels with some channel more than 2 LSB off
-    std::size_t pixels = 0;  ///< pixels compared
-    /// RMSE over the pixels the ground truth covers fully (coverage 1) only, so without the
-    /// silhouette aliasing that every one-sample-per-pixel method shares; measureError(Framebuffer,
-    /// GroundTruth) fills it, the span overload leaves 0.
-    double interiorRmse = 0.0;
-    std::size_t interiorPixels = 0;  ///< pixels in interiorRmse
-};
-
-/// Compares packed RGBA8 pixels (alpha ignored) with linear colours in [0,1], pixel by pixel;
-/// the spans must have the same length.
-ImageError measureError(std::span<const std::uint32_t> rgba, std::span<const glm::vec3> truth);
-
-/// Compares a rendered frame with the ground truth of the same size (an empty result, pixels
-/// = 0, when the sizes differ).
-ImageError measureError(const Framebuffer& frame, const GroundTruth& truth);
 
 }  // namespace facet

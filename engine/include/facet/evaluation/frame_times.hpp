@@ -1,24 +1,29 @@
 #pragma once
-// Repeated timings and their summary: what `facet bench`, `facet accuracy`, the sweeps and the
-// viewer's measurement report for a frame time.
+// Repeated timings and their summary: what `facet render --frames`, `facet bench`, `facet
+// accuracy`, the sweeps and the viewer (its Stats panel, its accuracy job) report for a time.
 
 #include <algorithm>
 #include <chrono>
 #include <utility>
 #include <vector>
 
-namespace facet::app {
+namespace facet {
 
 /// Median, min and max of the timed frames, in milliseconds.
 struct FrameTimes {
-    int frames = 0;
-    double median = 0.0;
-    double min = 0.0;
-    double max = 0.0;
+    int frames = 0;       ///< frames timed; 0: none, every time below is 0
+    double median = 0.0;  ///< of an even count, the mean of the middle two
+    double min = 0.0;     ///< fastest frame
+    double max = 0.0;     ///< slowest frame
+
+    bool operator==(const FrameTimes&) const = default;
 };
 
-/// Summarises frame times (any order); an empty list gives frames = 0. The median of an even
-/// count is the mean of the middle two.
+/// The median of `values` (any order), the mean of the middle two for an even count; 0 when
+/// empty.
+double medianOf(std::vector<double> values);
+
+/// Summarises frame times (any order); an empty list gives frames = 0.
 FrameTimes summarize(std::vector<double> ms);
 
 /// Runs `body` once untimed (scratch buffers, caches), then `frames` times (at least once)
@@ -37,4 +42,4 @@ FrameTimes timeRepeated(int frames, Body&& body) {
     return summarize(std::move(ms));
 }
 
-}  // namespace facet::app
+}  // namespace facet

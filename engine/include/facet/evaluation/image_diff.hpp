@@ -1,7 +1,9 @@
 #pragma once
 // Per-pixel comparison of two frames: the numbers and the heat map behind the viewer's Compare
-// panel (affine against perspective-correct, say), usable by tests and tools alike.
+// panel (affine against perspective-correct, say), and the histogram of differences the twin's
+// tests bound.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -27,5 +29,23 @@ int pixelError(std::uint32_t a, std::uint32_t b);
 /// the largest error found, so any difference is visible. Its depth plane is left as is.
 ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* heat = nullptr,
                      int scale = 0);
+
+/// How many pixels have each error (pixelError, 0..255): for bounds on the tail of the errors,
+/// not only their largest.
+struct DiffHistogram {
+    std::array<std::size_t, 256> count{};  ///< pixels by error
+    std::size_t total = 0;                 ///< pixels counted
+
+    /// Counts one pixel of error `error` (0..255).
+    void add(int error);
+    /// The smallest error at or below which lie `fraction` (0..1) of the pixels; 0 when empty.
+    int percentile(double fraction) const;
+    /// The largest error counted; 0 when empty.
+    int max() const;
+    /// Pixels whose error is above `error`.
+    std::size_t above(int error) const;
+    /// above(error) as a share of the pixels counted (of 1 when none were).
+    double shareAbove(int error) const;
+};
 
 }  // namespace facet
