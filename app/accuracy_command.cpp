@@ -51,7 +51,7 @@ int runAccuracy(const AccuracyOptions& o) {
             std::fprintf(stderr, "%s\n", scene.error().what().c_str());
             return kBadInput;
         }
-        if (!o.texture.empty() && !scene.value().texture && !scene.value().mesh.uvs.empty()) {
+        if (!o.texture.empty() && !scene.value().texture && !scene.value().mesh->uvs.empty()) {
             if (Status st = loadSceneTexture(scene.value(), o.texture)) {
                 std::fprintf(stderr, "%s\n", st->what().c_str());
                 return kBadInput;

@@ -46,9 +46,9 @@ int runRender(const RenderOptions& o) {
                 o.cull ? ", culled" : "");
     printFrameTimes(ms);
     if (o.stats) {
-        std::printf("mesh: %zu vertices, %zu triangles%s%s\n", scene.mesh.vertexCount(),
-                    scene.mesh.triangleCount(), scene.mesh.hasColors() ? ", colours" : "",
-                    scene.mesh.hasUvs() ? ", uv" : "");
+        std::printf("mesh: %zu vertices, %zu triangles%s%s\n", scene.mesh->vertexCount(),
+                    scene.mesh->triangleCount(), scene.mesh->hasColors() ? ", colours" : "",
+                    scene.mesh->hasUvs() ? ", uv" : "");
         std::printf("triangles: %zu in, %zu culled, %zu clipped, %zu rasterized\n",
                     stats.trianglesIn, stats.trianglesCulled, stats.trianglesClipped,
                     stats.trianglesRasterized);

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "commands.hpp"
+#include "facet/camera.hpp"
 #include "facet/evaluation/frame_times.hpp"
 #include "facet/scene_io.hpp"
 
@@ -21,7 +22,7 @@ bool parseSize(const std::string& text, int& w, int& h) {
     auto r1 = std::from_chars(b, b + x, w);
     auto r2 = std::from_chars(b + x + 1, e, h);
     return r1.ec == std::errc{} && r1.ptr == b + x && r2.ec == std::errc{} && r2.ptr == e &&
-           w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
+           w >= 1 && h >= 1 && w <= kMaxImageSide && h <= kMaxImageSide;
 }
 
 /// Parses RRGGBB (an optional leading # or 0x is accepted).
@@ -137,7 +138,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         return bad(o.scene +
                    ": the texture shader needs a texture: the scene names none (line 10 "
                    "or an OBJ map_Kd); give one with --texture IMAGE");
-    if (settings.shader == ShaderKind::Texture && !scene.mesh.hasUvs())
+    if (settings.shader == ShaderKind::Texture && !scene.mesh->hasUvs())
         std::fprintf(stderr,
                      "%s: warning: %s has no texture coordinates; every pixel samples "
                      "uv = (0, 0)\n",
@@ -145,11 +146,9 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     if (!o.size.empty()) {
         int w = 0, h = 0;
         if (!parseSize(o.size, w, h))
-            return bad("--size wants WxH with 1..16384 each, got '" + o.size + "'");
-        // Scaling f with the width keeps the horizontal field of view.
-        scene.camera.focal *= static_cast<double>(w) / scene.camera.width;
-        scene.camera.width = w;
-        scene.camera.height = h;
+            return bad("--size wants WxH with 1.." + std::to_string(kMaxImageSide) +
+                       " each, got '" + o.size + "'");
+        scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
     }
     return kOk;
 }

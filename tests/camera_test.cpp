@@ -2,6 +2,7 @@
 // eye (1.2, 2, 2), look-at the origin, y hint (0, -1, 0), f = 512, 512 × 512.
 
 #include <cmath>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -98,6 +99,38 @@ TEST(Camera, CheckCameraRejectsDegenerateSetups) {
     c = example0();
     c.width = 0;
     EXPECT_NE(checkCamera(c).find("size"), std::string::npos);
+    c = example0();
+    c.height = kMaxImageSide + 1;
+    EXPECT_EQ(checkCamera(c), "image size must be 1..16384 pixels in each direction");
+    c.height = kMaxImageSide;
+    EXPECT_EQ(checkCamera(c), "");
+}
+
+// One resize rule for every caller: the pose stays, f follows the kept axis, and an n-times image
+// (supersampling, ground truth) gets exactly n·f, so its sample grid is exact.
+TEST(Camera, ResizedKeepsThePoseAndOneFieldOfView) {
+    const Camera c = example0();
+    const Camera wide = resizedCamera(c, 1024, 256);
+    EXPECT_EQ(wide.eye, c.eye);
+    EXPECT_EQ(wide.look, c.look);
+    EXPECT_EQ(wide.up, c.up);
+    EXPECT_EQ(wide.width, 1024);
+    EXPECT_EQ(wide.height, 256);
+    EXPECT_EQ(wide.focal, 1024.0);  // the width doubled: the horizontal field of view stays
+    EXPECT_EQ(resizedCamera(c, 1024, 256, KeepFov::Vertical).focal, 256.0);
+    EXPECT_NE(wide, c);
+    EXPECT_EQ(resizedCamera(c, c.width, c.height), c);
+
+    Camera odd = c;
+    odd.focal = 0.1 + 0.2;  // not a round number
+    odd.width = 301;
+    odd.height = 197;
+    for (const int n : {2, 3, 4, 8}) {
+        const Camera big = resizedCamera(odd, odd.width * n, odd.height * n);
+        EXPECT_EQ(big.focal, odd.focal * n) << n;
+        EXPECT_EQ(big.width, 301 * n);
+        EXPECT_EQ(big.height, 197 * n);
+    }
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -34,11 +36,13 @@ facet::Scene triangleScene(int width, int height, glm::dvec2 a, glm::dvec2 b, gl
     scene.camera.width = width;
     scene.camera.height = height;
     scene.camera.focal = 10.0;
+    facet::Mesh mesh;
     for (const glm::dvec2 p : {a, b, c}) {
-        scene.mesh.positions.push_back(worldAt(scene.camera, p.x, p.y, 2.0));
-        scene.mesh.colors.push_back(color);
+        mesh.positions.push_back(worldAt(scene.camera, p.x, p.y, 2.0));
+        mesh.colors.push_back(color);
     }
-    scene.mesh.indices = {0, 1, 2};
+    mesh.indices = {0, 1, 2};
+    scene.mesh = std::make_shared<const facet::Mesh>(std::move(mesh));
     return scene;
 }
 

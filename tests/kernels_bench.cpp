@@ -103,11 +103,11 @@ const ClipMesh* bunnyClip(std::string& error) {
     if (scene == nullptr) return nullptr;
     if (mesh.clip.empty()) {
         const glm::mat4 clipFromWorldF(clipFromWorld(scene->camera));
-        for (const glm::vec3& p : scene->mesh.positions)
+        for (const glm::vec3& p : scene->mesh->positions)
             mesh.clip.push_back(clipFromWorldF * glm::vec4(p, 1.0f));
         mesh.input.clip = mesh.clip;
-        mesh.input.indices = scene->mesh.indices;
-        mesh.input.nearPlane = static_cast<float>(resolveNearPlane(RenderSettings{}, scene->mesh));
+        mesh.input.indices = scene->mesh->indices;
+        mesh.input.nearPlane = static_cast<float>(resolveNearPlane(RenderSettings{}, *scene->mesh));
     }
     return &mesh;
 }

@@ -279,20 +279,17 @@ TEST(Lighting, ShadeClampsToUnitRange) {
     EXPECT_EQ(facet::shade(glm::vec3(0.5f), -1.0f), glm::vec3(0.0f));
 }
 
-TEST(Lighting, ParamsComeFromTheScene) {
+TEST(Lighting, FastConstantsFoldTheSceneLighting) {
     facet::Scene scene;
-    scene.ambient = 0.25;
-    scene.light.position = {1, 2, 3, 0};
-    scene.light.intensity = 2.0;
-    scene.material = facet::Material{0.1, 0.2, 0.3, 40.0};
-    const LightingParams p = facet::lightingParams(scene);
-    EXPECT_EQ(p.ambient, 0.25);
-    EXPECT_EQ(p.light.position, glm::dvec4(1, 2, 3, 0));
-    EXPECT_EQ(p.light.intensity, 2.0);
-    EXPECT_EQ(p.material.s, 40.0);
+    scene.lighting.ambient = 0.25;
+    scene.lighting.light.position = {1, 2, 3, 0};
+    scene.lighting.light.intensity = 2.0;
+    scene.lighting.material = facet::Material{0.1, 0.2, 0.3, 40.0};
+    EXPECT_EQ(scene.lighting, params(0.25, {1, 2, 3, 0}, 2.0, 0.1, 0.2, 0.3, 40.0));
+    EXPECT_NE(scene.lighting, params(0.25, {1, 2, 3, 0}, 2.0, 0.1, 0.2, 0.3, 41.0));
 
     // Folded constants: Ia·Ka, Id·Kd, Id·Ks, s, and the light rescaled to max |component| 1.
-    const facet::FastLighting f = facet::prepareLighting(p);
+    const facet::FastLighting f = facet::prepareLighting(scene.lighting);
     EXPECT_FLOAT_EQ(f.ambientTerm, 0.025f);
     EXPECT_FLOAT_EQ(f.diffuse, 0.4f);
     EXPECT_FLOAT_EQ(f.specular, 0.6f);

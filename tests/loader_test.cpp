@@ -18,6 +18,7 @@
 
 #include "facet/mesh.hpp"
 #include "facet/mesh_io.hpp"
+#include "facet/procedural.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 #include "shared_data.hpp"
@@ -609,6 +610,20 @@ TEST(MeshQueries, BoundsAndDiagonal) {
     expectVec(b.min, {-1, 0, 3});
     expectVec(b.max, {1, 5, 4});
     EXPECT_FLOAT_EQ(b.diagonal(), std::sqrt(4.0f + 25.0f + 1.0f));
+    EXPECT_EQ(b, (facet::Bounds{{-1, 0, 3}, {1, 5, 4}}));
+    EXPECT_NE(b, facet::computeBounds(empty));
+}
+
+TEST(MeshQueries, ColouredByPositionSpansTheBoundingBox) {
+    Mesh m;
+    m.positions = {{1, 2, 3}, {-1, 5, 3}, {0, 0, 3}};  // flat in z: that channel is 0
+    m.colors = {{9, 9, 9}};                            // replaced, not kept
+    const Mesh c = facet::colouredByPosition(m);
+    EXPECT_EQ(c.positions, m.positions);
+    ASSERT_EQ(c.colors.size(), 3u);
+    expectVec(c.colors[0], glm::vec3(1.0f, 0.4f, 0.0f));
+    expectVec(c.colors[1], glm::vec3(0.0f, 1.0f, 0.0f));
+    expectVec(c.colors[2], glm::vec3(0.5f, 0.0f, 0.0f));
 }
 
 TEST(MeshQueries, UniqueEdgesAreSortedPairs) {
@@ -636,27 +651,27 @@ TEST(SceneLoader, ValidScene) {
     EXPECT_EQ(s.path, data("scene_valid.scene"));
     EXPECT_EQ(s.meshPath, data("mesh_square.off"));
     EXPECT_TRUE(s.texturePath.empty());
-    EXPECT_EQ(s.mesh.triangleCount(), 2u);
+    EXPECT_EQ(s.mesh->triangleCount(), 2u);
     expectVec(s.camera.eye, {0, 0, -3});
     expectVec(s.camera.look, {0, 0, 0});
     expectVec(s.camera.up, {0, -1, 0});
     EXPECT_EQ(s.camera.focal, 256.0);
     EXPECT_EQ(s.camera.width, 320);
     EXPECT_EQ(s.camera.height, 240);
-    EXPECT_EQ(s.ambient, 0.5);
-    EXPECT_EQ(s.light.position, glm::dvec4(1, 2, -4, 1));
-    EXPECT_EQ(s.light.intensity, 0.75);
-    EXPECT_EQ(s.material.ka, 0.1);
-    EXPECT_EQ(s.material.kd, 0.6);
-    EXPECT_EQ(s.material.ks, 0.3);
-    EXPECT_EQ(s.material.s, 12.0);
+    EXPECT_EQ(s.lighting.ambient, 0.5);
+    EXPECT_EQ(s.lighting.light.position, glm::dvec4(1, 2, -4, 1));
+    EXPECT_EQ(s.lighting.light.intensity, 0.75);
+    EXPECT_EQ(s.lighting.material.ka, 0.1);
+    EXPECT_EQ(s.lighting.material.kd, 0.6);
+    EXPECT_EQ(s.lighting.material.ks, 0.3);
+    EXPECT_EQ(s.lighting.material.s, 12.0);
 }
 
 TEST(SceneLoader, CrlfScene) {
     auto r = facet::loadScene(data("scene_crlf.scene"));
     expectLoaded(r);
     EXPECT_EQ(r->camera.width, 320);
-    EXPECT_EQ(r->material.s, 12.0);
+    EXPECT_EQ(r->lighting.material.s, 12.0);
 }
 
 TEST(SceneLoader, ParseFromMemoryWithBomCrlfAndTrailingComments) {
@@ -668,23 +683,23 @@ TEST(SceneLoader, ParseFromMemoryWithBomCrlfAndTrailingComments) {
     EXPECT_EQ(r->meshPath, "my mesh.obj");
     EXPECT_EQ(r->texturePath, "sub dir/tex.png");
     EXPECT_EQ(r->camera.height, 32);
-    EXPECT_EQ(r->ambient, 0.0);
-    EXPECT_EQ(r->light.position, glm::dvec4(1, 1, 1, 0));
-    EXPECT_EQ(r->light.intensity, 2.0);
+    EXPECT_EQ(r->lighting.ambient, 0.0);
+    EXPECT_EQ(r->lighting.light.position, glm::dvec4(1, 1, 1, 0));
+    EXPECT_EQ(r->lighting.light.intensity, 2.0);
 }
 
 TEST(SceneLoader, FiveNumberLight) {
     auto r = facet::loadScene(data("scene_light_5_numbers.scene"));
     expectLoaded(r);
-    EXPECT_EQ(r->light.position, glm::dvec4(1, 2, -4, 2));
-    EXPECT_EQ(r->light.intensity, 0.75);  // the 5th number, not w (the course code's bug)
+    EXPECT_EQ(r->lighting.light.position, glm::dvec4(1, 2, -4, 2));
+    EXPECT_EQ(r->lighting.light.intensity, 0.75);  // the 5th number, not w (the course code's bug)
 }
 
 TEST(SceneLoader, DirectionalLight) {
     auto r = facet::loadScene(data("scene_light_directional.scene"));
     expectLoaded(r);
-    EXPECT_EQ(r->light.position, glm::dvec4(0, 0, -1, 0));
-    EXPECT_EQ(r->light.intensity, 0.9);
+    EXPECT_EQ(r->lighting.light.position, glm::dvec4(0, 0, -1, 0));
+    EXPECT_EQ(r->lighting.light.intensity, 0.9);
 }
 
 TEST(SceneLoader, TextureLine) {
@@ -698,7 +713,7 @@ TEST(SceneLoader, TextureLine) {
 TEST(SceneLoader, ObjMaterialTextureBecomesTheScenesTexture) {
     auto r = facet::loadScene(data("scene_obj_texture.scene"));
     expectLoaded(r);
-    EXPECT_EQ(r->mesh.texturePath, data("texture_checker.png"));
+    EXPECT_EQ(r->mesh->texturePath, data("texture_checker.png"));
     EXPECT_EQ(r->texturePath, data("texture_checker.png"));
     ASSERT_NE(r->texture, nullptr);
 }
@@ -736,60 +751,60 @@ TEST(SceneLoader, CourseScenes) {
         auto r = facet::loadScene(course("example0.scene"));
         expectLoaded(r);
         EXPECT_EQ(r->meshPath, course("cube_multi_color.off"));  // found by the bare name
-        EXPECT_EQ(r->mesh.vertexCount(), 8u);
-        EXPECT_EQ(r->mesh.triangleCount(), 12u);
+        EXPECT_EQ(r->mesh->vertexCount(), 8u);
+        EXPECT_EQ(r->mesh->triangleCount(), 12u);
         expectVec(r->camera.eye, {1.2, 2.0, 2.0});
         expectVec(r->camera.look, {0, 0, 0});
         expectVec(r->camera.up, {0, -1, 0});
         EXPECT_EQ(r->camera.focal, 512.0);
         EXPECT_EQ(r->camera.width, 512);
         EXPECT_EQ(r->camera.height, 512);
-        EXPECT_EQ(r->ambient, 1.8);
-        EXPECT_EQ(r->light.position, glm::dvec4(0, 0, 8, 1));
-        EXPECT_EQ(r->light.intensity, 9.0);
-        EXPECT_EQ(r->material.ka, 0.5);
-        EXPECT_EQ(r->material.s, 1.0);
+        EXPECT_EQ(r->lighting.ambient, 1.8);
+        EXPECT_EQ(r->lighting.light.position, glm::dvec4(0, 0, 8, 1));
+        EXPECT_EQ(r->lighting.light.intensity, 9.0);
+        EXPECT_EQ(r->lighting.material.ka, 0.5);
+        EXPECT_EQ(r->lighting.material.s, 1.0);
     }
     {
         auto r = facet::loadScene(course("example1.scene"));
         expectLoaded(r);
-        EXPECT_EQ(r->mesh.vertexCount(), 444u);
-        EXPECT_EQ(r->mesh.triangleCount(), 884u);
+        EXPECT_EQ(r->mesh->vertexCount(), 444u);
+        EXPECT_EQ(r->mesh->triangleCount(), 884u);
         expectVec(r->camera.eye, {1.0, 1.0, 1.5});
         expectVec(r->camera.look, {-0.05, 0.1, 0.0});
         EXPECT_EQ(r->camera.focal, 3500.0);
         EXPECT_EQ(r->camera.width, 640);
         EXPECT_EQ(r->camera.height, 480);
-        EXPECT_EQ(r->ambient, 0.5);
-        EXPECT_EQ(r->light.position, glm::dvec4(5, 8, 8, 1));
-        EXPECT_EQ(r->light.intensity, 4.0);
+        EXPECT_EQ(r->lighting.ambient, 0.5);
+        EXPECT_EQ(r->lighting.light.position, glm::dvec4(5, 8, 8, 1));
+        EXPECT_EQ(r->lighting.light.intensity, 4.0);
     }
     {
         auto r = facet::loadScene(course("example2.scene"));
         expectLoaded(r);
-        EXPECT_EQ(r->mesh.vertexCount(), 2947u);
-        EXPECT_EQ(r->mesh.triangleCount(), 5808u);
+        EXPECT_EQ(r->mesh->vertexCount(), 2947u);
+        EXPECT_EQ(r->mesh->triangleCount(), 5808u);
         expectVec(r->camera.eye, {-1.5, 4.5, 6.0});
         EXPECT_EQ(r->camera.focal, 2000.0);
         EXPECT_EQ(r->camera.width, 800);
         EXPECT_EQ(r->camera.height, 600);
-        EXPECT_EQ(r->ambient, 1.0);
-        EXPECT_EQ(r->light.intensity, 0.8);
-        EXPECT_EQ(r->material.s, 3.0);
+        EXPECT_EQ(r->lighting.ambient, 1.0);
+        EXPECT_EQ(r->lighting.light.intensity, 0.8);
+        EXPECT_EQ(r->lighting.material.s, 3.0);
     }
     {
         auto r = facet::loadScene(course("example_textured.scene"));
         expectLoaded(r);
-        EXPECT_EQ(r->mesh.vertexCount(), 4u);
-        EXPECT_EQ(r->mesh.triangleCount(), 2u);
-        EXPECT_EQ(r->mesh.uvs.size(), 4u);
+        EXPECT_EQ(r->mesh->vertexCount(), 4u);
+        EXPECT_EQ(r->mesh->triangleCount(), 2u);
+        EXPECT_EQ(r->mesh->uvs.size(), 4u);
         expectVec(r->camera.eye, {0.75, 1.25, 0.5});
         expectVec(r->camera.look, {0.5, 0.5, 0.0});
         expectVec(r->camera.up, {0, 0, 1});
         EXPECT_EQ(r->camera.focal, 256.0);
-        EXPECT_EQ(r->ambient, 0.1);
-        EXPECT_EQ(r->light.intensity, 0.9);
-        EXPECT_EQ(r->material.s, 10.0);
+        EXPECT_EQ(r->lighting.ambient, 0.1);
+        EXPECT_EQ(r->lighting.light.intensity, 0.9);
+        EXPECT_EQ(r->lighting.material.s, 10.0);
         EXPECT_TRUE(r->texturePath.empty());
     }
 }

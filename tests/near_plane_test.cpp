@@ -2,12 +2,14 @@
 // must stay finite and agree with the double-precision reference frame by frame.
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
 #include "facet/evaluation/reference_compare.hpp"
+#include "facet/procedural.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
@@ -23,10 +25,8 @@ TEST(NearPlane, CameraThroughTheBunnyStaysFiniteAndMatchesTheReference) {
     ASSERT_TRUE(loaded.ok()) << loaded.error().what();
     Scene scene = loaded.value();
     // Colour the vertices by position so interpolation errors show up as colour differences.
-    const Bounds b = computeBounds(scene.mesh);
-    scene.mesh.colors.clear();
-    for (const auto& p : scene.mesh.positions)
-        scene.mesh.colors.push_back((p - b.min) / (b.max - b.min));
+    scene.mesh = std::make_shared<const Mesh>(colouredByPosition(*scene.mesh));
+    const Bounds b = computeBounds(*scene.mesh);
     scene.camera.width = 160;
     scene.camera.height = 90;
     scene.camera.focal = 150.0;
@@ -38,7 +38,7 @@ TEST(NearPlane, CameraThroughTheBunnyStaysFiniteAndMatchesTheReference) {
     Renderer renderer;
     Framebuffer fb;
     std::size_t clippedFrames = 0;
-    const auto near = static_cast<float>(resolveNearPlane(RenderSettings{}, scene.mesh));
+    const auto near = static_cast<float>(resolveNearPlane(RenderSettings{}, *scene.mesh));
     for (int frame = 0; frame < 100; ++frame) {
         const double t = -0.6 + 0.85 * frame / 99.0;
         scene.camera.eye = centre + t * extent * dir;

@@ -207,8 +207,10 @@ TEST(Reference, ProjectedFrontFaceSurvivesCulling) {
     // camera (normal -z) must be kept, its reverse culled; world +Y must point up on screen.
     facet::Scene scene;
     scene.camera = {{0.0, 0.0, -5.0}, {0.0, 0.0, 0.0}, {0.0, -1.0, 0.0}, 100.0, 64, 64};
-    scene.mesh.positions = {{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}};
-    scene.mesh.indices = {0, 1, 2};
+    facet::Mesh mesh;
+    mesh.positions = {{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}};
+    mesh.indices = {0, 1, 2};
+    scene.mesh = std::make_shared<const facet::Mesh>(mesh);
     const std::vector<glm::dvec4> clip = facet::reference::projectScene(scene);
     ASSERT_EQ(clip.size(), 3u);
     EXPECT_DOUBLE_EQ(clip[0].x / clip[0].w, 32.0);  // the look-at point is the image centre
@@ -221,7 +223,8 @@ TEST(Reference, ProjectedFrontFaceSurvivesCulling) {
     s.cullBackFaces = true;
     s.nearPlane = 0.01;
     EXPECT_GT(coveredCount(facet::reference::render(scene, s)), 100);
-    scene.mesh.indices = {0, 2, 1};
+    mesh.indices = {0, 2, 1};
+    scene.mesh = std::make_shared<const facet::Mesh>(mesh);
     EXPECT_EQ(coveredCount(facet::reference::render(scene, s)), 0);
 }
 
@@ -514,7 +517,7 @@ TEST(Reference, BackgroundAndWhiteDefault) {
 facet::Scene sceneWith(const facet::Mesh& mesh, int size, double focal) {
     facet::Scene scene;
     scene.camera = {{0.0, 0.0, -5.0}, {0.0, 0.0, 0.0}, {0.0, -1.0, 0.0}, focal, size, size};
-    scene.mesh = mesh;
+    scene.mesh = std::make_shared<const facet::Mesh>(mesh);
     return scene;
 }
 
@@ -531,8 +534,8 @@ TEST(Reference, PhongEqualsGouraudOnAFlatTriangle) {
     mesh.positions = {{-1.5f, -1.5f, 0.0f}, {-1.5f, 1.5f, 0.0f}, {1.5f, -1.5f, 0.0f}};
     mesh.indices = {0, 1, 2};
     facet::Scene scene = sceneWith(mesh, 64, 80.0);
-    scene.light = {{0.3, 0.2, -1.0, 0.0}, 1.0};
-    scene.material = {0.2, 0.6, 0.0, 1.0};
+    scene.lighting.light = {{0.3, 0.2, -1.0, 0.0}, 1.0};
+    scene.lighting.material = {0.2, 0.6, 0.0, 1.0};
     const double expected = 0.2 + 0.6 / std::sqrt(1.13);  // Ia·Ka + Id·Kd·(n·l)
     const Image gouraud = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud));
     const Image phong = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong));
@@ -553,8 +556,8 @@ TEST(Reference, PhongShowsTheHighlightGouraudMisses) {
     facet::Mesh sphere = facet::makeUvSphere(7, 10);
     sphere.colors.clear();
     facet::Scene scene = sceneWith(sphere, 64, 100.0);
-    scene.light = {{0.0, 0.0, -5.0, 1.0}, 1.0};
-    scene.material = {0.1, 0.4, 0.8, 60.0};
+    scene.lighting.light = {{0.0, 0.0, -5.0, 1.0}, 1.0};
+    scene.lighting.material = {0.1, 0.4, 0.8, 60.0};
     const Image gouraud = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud));
     const Image phong = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong));
     double maxGouraud = 0.0, maxPhong = 0.0;

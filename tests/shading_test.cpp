@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "facet/framebuffer.hpp"
@@ -21,6 +22,7 @@ namespace {
 using facet::Framebuffer;
 using facet::Interp;
 using facet::Lighting;
+using facet::LightingParams;
 using facet::RenderSettings;
 using facet::Scene;
 using facet::ShaderKind;
@@ -43,7 +45,7 @@ facet::Mesh square(float zPlane = 0.0f, float half = 1.0f) {
 /// Camera on the −z axis looking at the origin, world +Y up on screen.
 Scene sceneFacing(facet::Mesh mesh, double distance, double focal, int size) {
     Scene s;
-    s.mesh = std::move(mesh);
+    s.mesh = std::make_shared<const facet::Mesh>(std::move(mesh));
     s.camera.eye = {0.0, 0.0, -distance};
     s.camera.look = {0.0, 0.0, 0.0};
     s.camera.up = {0.0, -1.0, 0.0};
@@ -98,10 +100,10 @@ TEST(Shading, TrilinearPicksTheLevelFromTheDistance) {
 // the centre head-on. Gouraud interpolates the dim corners; Phong finds the bright centre.
 TEST(Shading, PhongFindsTheHighlightInsideAFace) {
     Scene s = sceneFacing(square(0.0f, 2.0f), 6.0, 100.0, 128);
-    s.ambient = 0.0;
-    s.light.position = {0.0, 0.0, -0.3, 1.0};
-    s.light.intensity = 1.0;
-    s.material = {0.0, 0.8, 0.0, 1.0};
+    s.lighting.ambient = 0.0;
+    s.lighting.light.position = {0.0, 0.0, -0.3, 1.0};
+    s.lighting.light.intensity = 1.0;
+    s.lighting.material = {0.0, 0.8, 0.0, 1.0};
     RenderSettings set;
     facet::Renderer r;
     Framebuffer gouraud, phong;
@@ -189,13 +191,13 @@ TEST(Shading, NormalsDisplayDrawsRedSegmentsWithTheDepthTest) {
     EXPECT_GT(red, 40) << "four segments of 25 px seen from the side";
 
     // A wall between the camera and the segments hides them from Painter, not from Simple.
-    facet::Mesh both = s.mesh;
+    facet::Mesh both = *s.mesh;
     const std::uint32_t base = static_cast<std::uint32_t>(both.positions.size());
     for (const glm::vec3 p :
          {glm::vec3(2, -2, -3), glm::vec3(2, 2, -3), glm::vec3(2, 2, 3), glm::vec3(2, -2, 3)})
         both.positions.push_back(p);
     for (const std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) both.indices.push_back(base + i);
-    s.mesh = both;
+    s.mesh = std::make_shared<const facet::Mesh>(std::move(both));
     set.normalLength = 1.0;
     r.render(s, set, f);
     int hidden = 0;
@@ -214,7 +216,9 @@ TEST(Shading, CombineMultipliesTheTexelByTheColour) {
     std::vector<std::uint32_t> px(4, facet::packRgba(200, 100, 50));
     s.texture = std::make_shared<const facet::Texture>(
         std::move(facet::Texture::fromRgba(2, 2, std::move(px), "flat").value()));
-    s.mesh.colors.assign(4, glm::vec3(0.5f, 1.0f, 0.0f));
+    facet::Mesh coloured = *s.mesh;
+    coloured.colors.assign(4, glm::vec3(0.5f, 1.0f, 0.0f));
+    s.mesh = std::make_shared<const facet::Mesh>(std::move(coloured));
     RenderSettings set;
     set.shader = ShaderKind::Texture;
     facet::Renderer r;
@@ -239,9 +243,9 @@ namespace {
 TEST(Shading, LightingEditsShowInTheNextFrame) {
     auto start = [] {
         Scene x = sceneFacing(square(0.0f, 2.0f), 6.0, 100.0, 64);
-        x.light.position = {0.5, 0.5, -2.0, 1.0};
-        x.ambient = 0.2;
-        x.material = {0.2, 0.4, 0.2, 8.0};
+        x.lighting.light.position = {0.5, 0.5, -2.0, 1.0};
+        x.lighting.ambient = 0.2;
+        x.lighting.material = {0.2, 0.4, 0.2, 8.0};
         return x;
     };
     Scene s = start();
@@ -252,18 +256,18 @@ TEST(Shading, LightingEditsShowInTheNextFrame) {
         set.lighting = lighting;
         r.render(s, set, f);
         std::vector<std::uint32_t> previous = f.color;
-        const auto edits = {+[](Scene& x) { x.material.kd *= 0.5; },
-                            +[](Scene& x) { x.material.ks = 0.9; },
-                            +[](Scene& x) { x.material.s = 40.0; },
-                            +[](Scene& x) { x.ambient = 0.6; },
-                            +[](Scene& x) { x.material.ka = 0.9; },
-                            +[](Scene& x) { x.light.intensity = 2.0; },
-                            +[](Scene& x) {
+        const auto edits = {+[](LightingParams& x) { x.material.kd *= 0.5; },
+                            +[](LightingParams& x) { x.material.ks = 0.9; },
+                            +[](LightingParams& x) { x.material.s = 40.0; },
+                            +[](LightingParams& x) { x.ambient = 0.6; },
+                            +[](LightingParams& x) { x.material.ka = 0.9; },
+                            +[](LightingParams& x) { x.light.intensity = 2.0; },
+                            +[](LightingParams& x) {
                                 x.light.position = {0.0, 0.0, -1.0, 0.0};
                             }};
         int k = 0;
         for (auto edit : edits) {
-            edit(s);
+            edit(s.lighting);
             r.render(s, set, f);
             EXPECT_NE(f.color, previous) << facet::toString(lighting) << ", edit " << k;
             previous = f.color;

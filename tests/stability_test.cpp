@@ -22,8 +22,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -261,7 +263,7 @@ TEST(ExtremeTriangles, NonFiniteClipCoordinatesCoverNothingAndSpareTheRest) {
 /// A small scene: camera at -z looking at the origin, 64×48.
 Scene smallScene(Mesh mesh) {
     Scene scene;
-    scene.mesh = std::move(mesh);
+    scene.mesh = std::make_shared<const Mesh>(std::move(mesh));
     scene.camera.eye = {0.0, 0.0, -4.0};
     scene.camera.look = {0.0, 0.0, 0.0};
     scene.camera.up = {0.0, -1.0, 0.0};
@@ -414,7 +416,7 @@ TEST(ExtremeTriangles, ScaledSpheresMatchReferenceThroughRender) {
         for (auto& p : sphere.positions) p *= static_cast<float>(scale);
         Scene sc = smallScene(sphere);
         sc.camera.eye = glm::dvec3(0.2, -0.3, -4.0) * scale;
-        sc.light.position = glm::dvec4(glm::dvec3(2.0, -3.0, -4.0) * scale, 1.0);
+        sc.lighting.light.position = glm::dvec4(glm::dvec3(2.0, -3.0, -4.0) * scale, 1.0);
         for (Lighting lighting : {Lighting::Gouraud, Lighting::Phong}) {
             RenderSettings s;
             s.lighting = lighting;
@@ -436,13 +438,8 @@ Status loadShared(const char* relative, Scene& scene, int w, int h) {
     Result<Scene> loaded = loadScene(test::sharedData(relative));
     if (!loaded) return loaded.error();
     scene = std::move(loaded).value();
-    const Bounds b = computeBounds(scene.mesh);
-    scene.mesh.colors.clear();
-    for (const auto& p : scene.mesh.positions)
-        scene.mesh.colors.push_back((p - b.min) / (b.max - b.min));
-    scene.camera.focal *= static_cast<double>(w) / scene.camera.width;
-    scene.camera.width = w;
-    scene.camera.height = h;
+    scene.mesh = std::make_shared<const Mesh>(colouredByPosition(*scene.mesh));
+    scene.camera = resizedCamera(scene.camera, w, h);
     return std::nullopt;
 }
 
@@ -454,7 +451,7 @@ TEST(CameraPaths, FlyThroughSpotAndBunnyMatchesReference) {
         REQUIRE_SHARED_DATA(test::sharedData(path));
         const Status error = loadShared(path, scene, 96, 54);
         ASSERT_FALSE(error) << error->what();
-        const Bounds b = computeBounds(scene.mesh);
+        const Bounds b = computeBounds(*scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
         const glm::dvec3 dir = glm::normalize(glm::dvec3(-0.7, 0.15, 0.6));
         const double extent = b.diagonal();
@@ -484,13 +481,13 @@ TEST(CameraPaths, GrazingTheNearPlaneMatchesReference) {
     REQUIRE_SHARED_DATA(test::sharedData("scenes/bunny_1280x720.scene"));
     const Status error = loadShared("scenes/bunny_1280x720.scene", scene, 80, 45);
     ASSERT_FALSE(error) << error->what();
-    const Bounds b = computeBounds(scene.mesh);
+    const Bounds b = computeBounds(*scene.mesh);
     const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
-    const double nearPlane = resolveNearPlane(RenderSettings{}, scene.mesh);
+    const double nearPlane = resolveNearPlane(RenderSettings{}, *scene.mesh);
     Renderer renderer;
     // A vertex on the silhouette seen from +z: the one with the largest z.
-    glm::dvec3 surface = scene.mesh.positions[0];
-    for (const auto& p : scene.mesh.positions)
+    glm::dvec3 surface = scene.mesh->positions[0];
+    for (const auto& p : scene.mesh->positions)
         if (p.z > surface.z) surface = p;
     // Roughly the surface normal there (the vertex is the mesh's extreme in +z).
     const glm::dvec3 outward = glm::normalize(surface - centre);

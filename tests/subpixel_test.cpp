@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -37,7 +38,7 @@ std::vector<std::uint32_t> renderColors(const Scene& scene, const RenderSettings
 std::vector<glm::vec4> clipPositions(const Scene& scene) {
     const glm::mat4 m(clipFromWorld(scene.camera));
     std::vector<glm::vec4> clip;
-    for (const glm::vec3& p : scene.mesh.positions) clip.push_back(m * glm::vec4(p, 1.0f));
+    for (const glm::vec3& p : scene.mesh->positions) clip.push_back(m * glm::vec4(p, 1.0f));
     return clip;
 }
 
@@ -175,7 +176,7 @@ TEST(SubPixelBits, CoverageIsExactOnItsGrid) {
 // side. The poles' slivers are thinner than the grid here.
 TEST(SubPixelBits, SphereHasNoCracksOrDoubleDrawingAtFourBits) {
     Scene scene;
-    scene.mesh = makeUvSphere(48, 96);
+    scene.mesh = std::make_shared<const facet::Mesh>(makeUvSphere(48, 96));
     scene.camera.eye = {0.3, 1.7, 2.6};
     scene.camera.look = {0.0, 0.0, 0.0};
     scene.camera.up = {0.0, -1.0, 0.0};
@@ -188,7 +189,7 @@ TEST(SubPixelBits, SphereHasNoCracksOrDoubleDrawingAtFourBits) {
         RenderSettings s;
         s.subPixelBits = bits;
         std::vector<std::uint16_t> all, front;
-        const DrawInput in{.clip = clip, .indices = scene.mesh.indices, .nearPlane = 1e-3f};
+        const DrawInput in{.clip = clip, .indices = scene.mesh->indices, .nearPlane = 1e-3f};
         renderer.countCoverage(in, s, scene.camera.width, scene.camera.height, all);
         s.cullBackFaces = true;
         renderer.countCoverage(in, s, scene.camera.width, scene.camera.height, front);

@@ -7,10 +7,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <string>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
+#include "facet/camera.hpp"
 #include "facet/evaluation/ground_truth.hpp"
 #include "facet/evaluation/image_metrics.hpp"
 #include "facet/framebuffer.hpp"
@@ -32,11 +35,13 @@ Scene triangles(const std::vector<glm::dvec2>& corners) {
     scene.camera.width = 24;
     scene.camera.height = 16;
     scene.camera.focal = 20.0;
+    facet::Mesh mesh;
     for (const glm::dvec2 p : corners) {
-        scene.mesh.positions.push_back(worldAt(scene.camera, p.x, p.y, 2.0));
-        scene.mesh.colors.emplace_back(1.0f);
+        mesh.positions.push_back(worldAt(scene.camera, p.x, p.y, 2.0));
+        mesh.colors.emplace_back(1.0f);
     }
-    for (std::uint32_t i = 0; i < corners.size(); ++i) scene.mesh.indices.push_back(i);
+    for (std::uint32_t i = 0; i < corners.size(); ++i) mesh.indices.push_back(i);
+    scene.mesh = std::make_shared<const facet::Mesh>(std::move(mesh));
     return scene;
 }
 
@@ -44,9 +49,7 @@ Scene knot() {
     facet::Result<Scene> s = facet::loadScene(std::string(FACET_ASSETS_DIR) + "/default.scene");
     EXPECT_TRUE(s.ok()) << s.error().what();
     Scene scene = std::move(s).value();
-    scene.camera.focal *= 160.0 / scene.camera.width;
-    scene.camera.width = 160;
-    scene.camera.height = 120;
+    scene.camera = facet::resizedCamera(scene.camera, 160, 120);
     return scene;
 }
 

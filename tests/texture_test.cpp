@@ -26,6 +26,7 @@
 #include <string_view>
 #include <vector>
 
+#include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/texture.hpp"
 #include "reference/samplers.hpp"
@@ -646,7 +647,7 @@ TEST(TextureLoad, BadFilesGiveClearErrors) {
 TEST(TextureLoad, FromRgbaChecksItsInput) {
     EXPECT_FALSE(Texture::fromRgba(0, 4, {}, "x").ok());
     EXPECT_FALSE(Texture::fromRgba(4, -1, {}, "x").ok());
-    EXPECT_FALSE(Texture::fromRgba(kMaxTextureSize + 1, 1, {}, "x").ok());
+    EXPECT_FALSE(Texture::fromRgba(kMaxImageSide + 1, 1, {}, "x").ok());
     const Result<Texture> mismatch = Texture::fromRgba(2, 2, std::vector<std::uint32_t>(3), "x");
     ASSERT_FALSE(mismatch.ok());
     EXPECT_NE(mismatch.error().message.find("does not match"), std::string::npos);

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstdlib>
+#include <memory>
 #include <new>
 #include <string>
 #include <vector>
@@ -105,7 +106,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ThreadCount, testing::ValuesIn(threadCases()), 
 // the tiling: pixels on tile borders are neither lost nor drawn twice by neighbouring tiles.
 TEST(Tiles, BordersNeitherDropNorDoublePixels) {
     Scene scene;
-    scene.mesh = makeUvSphere(48, 96);
+    scene.mesh = std::make_shared<const facet::Mesh>(makeUvSphere(48, 96));
     scene.camera.eye = {0.0, 0.0, 3.0};
     scene.camera.look = {0.0, 0.0, 0.0};
     scene.camera.up = {0.0, -1.0, 0.0};
@@ -117,9 +118,9 @@ TEST(Tiles, BordersNeitherDropNorDoublePixels) {
     settings.threads = 2;
     const glm::mat4 clipFromWorldF(clipFromWorld(scene.camera));
     std::vector<glm::vec4> clip;
-    for (const glm::vec3& p : scene.mesh.positions)
+    for (const glm::vec3& p : scene.mesh->positions)
         clip.push_back(clipFromWorldF * glm::vec4(p, 1));
-    const DrawInput input{.clip = clip, .indices = scene.mesh.indices, .nearPlane = 1e-3f};
+    const DrawInput input{.clip = clip, .indices = scene.mesh->indices, .nearPlane = 1e-3f};
     std::vector<std::uint16_t> counts;
     renderer.countCoverage(input, settings, scene.camera.width, scene.camera.height, counts);
     std::size_t inside = 0, wrong = 0;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 
 #include "accuracy/accuracy_methods.hpp"
 #include "accuracy_job.hpp"
+#include "facet/camera.hpp"
 #include "facet/evaluation/ground_truth.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
@@ -39,19 +41,20 @@ Scene tiltedQuad(int width, int height, int layers = 1) {
     scene.camera.height = height;
     scene.camera.focal = 0.8 * width;
     const double w = width, h = height;
+    Mesh mesh;
     for (int k = layers - 1; k >= 0; --k) {
         const double z = 1.0 + 0.01 * k;
-        const auto first = static_cast<std::uint32_t>(scene.mesh.positions.size());
-        scene.mesh.positions.push_back(worldAt(scene.camera, -0.2 * w, 1.1 * h, 1.5 * z));
-        scene.mesh.positions.push_back(worldAt(scene.camera, 1.2 * w, 1.1 * h, 1.5 * z));
-        scene.mesh.positions.push_back(worldAt(scene.camera, 1.2 * w, 0.05 * h, 12.0 * z));
-        scene.mesh.positions.push_back(worldAt(scene.camera, -0.2 * w, 0.05 * h, 12.0 * z));
+        const auto first = static_cast<std::uint32_t>(mesh.positions.size());
+        mesh.positions.push_back(worldAt(scene.camera, -0.2 * w, 1.1 * h, 1.5 * z));
+        mesh.positions.push_back(worldAt(scene.camera, 1.2 * w, 1.1 * h, 1.5 * z));
+        mesh.positions.push_back(worldAt(scene.camera, 1.2 * w, 0.05 * h, 12.0 * z));
+        mesh.positions.push_back(worldAt(scene.camera, -0.2 * w, 0.05 * h, 12.0 * z));
         for (const glm::vec2 uv :
              {glm::vec2(0, 4), glm::vec2(4, 4), glm::vec2(4, 0), glm::vec2(0, 0)})
-            scene.mesh.uvs.push_back(uv);
-        for (const std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
-            scene.mesh.indices.push_back(first + i);
+            mesh.uvs.push_back(uv);
+        for (const std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(first + i);
     }
+    scene.mesh = std::make_shared<const Mesh>(std::move(mesh));
     std::vector<std::uint32_t> checks(32 * 32);
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x)
@@ -244,14 +247,14 @@ TEST(AccuracyJob, ANewRequestReplacesTheOneInFlight) {
     const std::shared_ptr<const AccuracyReport> report = job.report();
     ASSERT_TRUE(report);
     EXPECT_EQ(report->width, 32);
-    EXPECT_EQ(report->view.sceneVersion, 2u);
+    EXPECT_EQ(report->view.picture.sceneVersion, 2u);
     EXPECT_EQ(job.reportCount(), 1u);
 }
 
 TEST(AccuracyJob, ARequestTooBigForMemoryIsRefusedWithAMessage) {
     Scene scene = tiltedQuad(32, 24);
-    scene.camera.width = 16384;
-    scene.camera.height = 16384;
+    scene.camera.width = kMaxImageSide;
+    scene.camera.height = kMaxImageSide;
     AccuracyJob job;
     EXPECT_FALSE(job.start(scene, 1, textured(), 8));
     EXPECT_FALSE(job.running());
@@ -293,7 +296,7 @@ TEST(AccuracyJob, AReportGoesStaleWhenTheViewOrSettingsChange) {
     resized.camera.width = 50;
     EXPECT_FALSE(reportFresh(*report, accuracyView(resized, 3, settings)));
     Scene lit = scene;
-    lit.material.ks = 0.9;
+    lit.lighting.material.ks = 0.9;
     EXPECT_FALSE(reportFresh(*report, accuracyView(lit, 3, settings)));
     Scene retextured = scene;
     retextured.texture = std::make_shared<const Texture>();

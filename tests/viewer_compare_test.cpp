@@ -119,8 +119,9 @@ TEST(CompareView, ComposingTwoRenderersIsComposingTwoInterpolations) {
     CompareView c;
     c.leftFrame = cpu;
     c.rightFrame = gl;
-    c.divider = 0.25;
-    const Framebuffer& composed = c.compose();
+    CompareSettings quarter;
+    quarter.divider = 0.25;
+    const Framebuffer& composed = c.compose(quarter);
     composeSides(cpu, gl, CompareDisplay::Split, 0.25, 0, shown);
     EXPECT_TRUE(composed.color == shown.color);
     EXPECT_EQ(c.diff.pixelsDiffering, 1u);
@@ -162,7 +163,7 @@ TEST(RendererChoice, WhatAFrameRunsForEachChoice) {
 
 TEST(RendererChoice, TheTwinAndTheInterpolationCompareExcludeEachOther) {
     ViewerModel m;
-    CompareView c;
+    CompareSettings c;
     EXPECT_EQ(m.rendererChoice, RendererChoice::Cpu);
     setCompare(true, m.rendererChoice, c);
     EXPECT_TRUE(c.enabled);
@@ -184,9 +185,10 @@ TEST(CompareView, RendersTheSameViewWithTwoInterpolations) {
     ViewerModel m;
     ASSERT_FALSE(m.load(std::string(FACET_ASSETS_DIR) + "/default.scene"));
     m.prepareFrame(640, 360);
+    CompareSettings compare;
+    compare.enabled = true;
     CompareView c;
-    c.enabled = true;
-    const Framebuffer& shown = c.render(m.scene, m.settings);
+    const Framebuffer& shown = c.render(m.scene, m.settings, compare);
 
     // Each side is exactly what the engine draws with that interpolation alone.
     RenderSettings s = m.settings;
@@ -201,7 +203,7 @@ TEST(CompareView, RendersTheSameViewWithTwoInterpolations) {
     const ImageDiff d = diffImages(affine, perspective);
     EXPECT_EQ(c.diff.pixelsDiffering, d.pixelsDiffering);
     EXPECT_EQ(c.diff.maxError, d.maxError);
-    EXPECT_EQ(c.leftStats.trianglesIn, m.scene.mesh.triangleCount());
+    EXPECT_EQ(c.leftStats.trianglesIn, m.scene.mesh->triangleCount());
 
     ASSERT_EQ(shown.width, 640);
     for (int y = 0; y < shown.height; y += 7) {
@@ -210,15 +212,15 @@ TEST(CompareView, RendersTheSameViewWithTwoInterpolations) {
         EXPECT_EQ(shown.color[shown.index(320, y)], packRgba(255, 255, 255));
     }
 
-    c.display = CompareDisplay::Difference;
-    const Framebuffer& heat = c.compose();
+    compare.display = CompareDisplay::Difference;
+    const Framebuffer& heat = c.compose(compare);
     ASSERT_EQ(heat.width, 640);
     for (std::size_t i = 0; i < heat.color.size(); i += 97)
         EXPECT_EQ(heat.color[i] == packRgba(0, 0, 0), affine.color[i] == perspective.color[i]);
 
-    c.left = {Interp::Subdivided, 4};
-    c.right = {Interp::Subdivided, 4};
-    c.render(m.scene, m.settings);
+    compare.left = {Interp::Subdivided, 4};
+    compare.right = {Interp::Subdivided, 4};
+    c.render(m.scene, m.settings, compare);
     EXPECT_EQ(c.diff.pixelsDiffering, 0u);
 }
 
@@ -238,35 +240,34 @@ TEST(RenderWorker, HandsBackTheEngineFrameOfTheSubmittedState) {
     m.prepareFrame(640, 360);
     m.render();
     RenderWorker worker;
-    CompareView compare;
+    CompareSettings compare;
     Framebuffer shown;
     EXPECT_EQ(worker.wait(shown).renderMs, 0.0);  // no job yet: nothing handed out
     EXPECT_EQ(shown.width, 0);
 
-    worker.submit(m.scene, m.sceneVersion, m.settings, compare);
+    worker.submit(m.scene, m.settings, compare);
     const RenderResult& r = worker.wait(shown);
     EXPECT_TRUE(shown.color == m.frame.color);
-    EXPECT_EQ(r.stats.trianglesIn, m.scene.mesh.triangleCount());
+    EXPECT_EQ(r.stats.trianglesIn, m.scene.mesh->triangleCount());
     EXPECT_FALSE(r.compared);
 
     // Edits after a submit do not disturb the job; the next job sees them.
-    m.scene.material.ks = 0.0;
-    worker.submit(m.scene, m.sceneVersion, m.settings, compare);
-    m.scene.material.ks = 2.0;
+    m.scene.lighting.material.ks = 0.0;
+    worker.submit(m.scene, m.settings, compare);
+    m.scene.lighting.material.ks = 2.0;
     worker.wait(shown);
-    m.scene.material.ks = 0.0;
+    m.scene.lighting.material.ks = 0.0;
     m.render();
     EXPECT_TRUE(shown.color == m.frame.color);
     worker.wait(shown);  // again, no new job: the picture stays
     EXPECT_TRUE(shown.color == m.frame.color);
 
     compare.enabled = true;
-    worker.submit(m.scene, m.sceneVersion, m.settings, compare);
+    worker.submit(m.scene, m.settings, compare);
     const RenderResult& c = worker.wait(shown);
     EXPECT_TRUE(c.compared);
     CompareView direct;
-    direct.enabled = true;
-    const Framebuffer& expected = direct.render(m.scene, m.settings);
+    const Framebuffer& expected = direct.render(m.scene, m.settings, compare);
     EXPECT_TRUE(shown.color == expected.color);
     EXPECT_EQ(c.diff.pixelsDiffering, direct.diff.pixelsDiffering);
 
@@ -274,7 +275,7 @@ TEST(RenderWorker, HandsBackTheEngineFrameOfTheSubmittedState) {
     m.prepareFrame(320, 240);
     m.render();
     compare.enabled = false;
-    worker.submit(m.scene, m.sceneVersion, m.settings, compare);
+    worker.submit(m.scene, m.settings, compare);
     worker.wait(shown);
     EXPECT_EQ(shown.width, 320);
     EXPECT_TRUE(shown.color == m.frame.color);

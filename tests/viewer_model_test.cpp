@@ -70,22 +70,22 @@ TEST(ViewerModel, MaterialLightAndBackgroundChangesShowInTheNextFrame) {
     m.render();
     const std::vector<std::uint32_t> lit = m.frame.color;
 
-    m.scene.material.ks = 0.0;  // what the Ks slider does
+    m.scene.lighting.material.ks = 0.0;  // what the Ks slider does
     m.render();
     EXPECT_FALSE(m.frame.color == lit) << "Ks = 0 left the frame unchanged";
-    m.scene.material.ks = 0.4;
+    m.scene.lighting.material.ks = 0.4;
     m.render();
     EXPECT_TRUE(m.frame.color == lit) << "Ks back to 0.4 should restore the frame";
 
-    m.scene.light.position.w = 0.0;  // point → directional
+    m.scene.lighting.light.position.w = 0.0;  // point → directional
     m.render();
     EXPECT_FALSE(m.frame.color == lit);
-    m.scene.light.position.w = 1.0;
+    m.scene.lighting.light.position.w = 1.0;
 
-    m.scene.ambient = 0.0;
+    m.scene.lighting.ambient = 0.0;
     m.render();
     EXPECT_FALSE(m.frame.color == lit);
-    m.scene.ambient = 0.6;
+    m.scene.lighting.ambient = 0.6;
 
     m.settings.background = 0x102030;
     m.render();
@@ -96,7 +96,7 @@ TEST(ViewerModel, MalformedScenesKeepTheOldOne) {
     ViewerModel m = loadedModel();
     const std::vector<std::uint32_t> before = m.frame.color;
     const std::string path = m.scene.path;
-    const std::size_t triangles = m.scene.mesh.triangleCount();
+    const std::size_t triangles = m.scene.mesh->triangleCount();
     for (const char* bad :
          {"scene_nan.scene", "scene_inf.scene", "scene_light_3_numbers.scene",
           "scene_missing_mesh.scene", "scene_bad_mesh.scene", "scene_truncated.scene",
@@ -107,7 +107,7 @@ TEST(ViewerModel, MalformedScenesKeepTheOldOne) {
         // the scene or the mesh it names.
         EXPECT_NE(error->what().find("tests/data/"), std::string::npos) << error->what();
         EXPECT_EQ(m.scene.path, path) << bad;
-        EXPECT_EQ(m.scene.mesh.triangleCount(), triangles) << bad;
+        EXPECT_EQ(m.scene.mesh->triangleCount(), triangles) << bad;
         m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
         m.render();
         EXPECT_TRUE(m.frame.color == before) << bad << " changed the picture";
@@ -364,7 +364,7 @@ TEST(ViewerLayout, LetterboxKeepsTheAspectAndCentres) {
     EXPECT_EQ(tall.w, 720);
     EXPECT_EQ(tall.h, 720);
     EXPECT_EQ(tall.x, 280);
-    const Rect tiny = letterbox(16384, 1, 100, 100);
+    const Rect tiny = letterbox(kMaxImageSide, 1, 100, 100);
     EXPECT_GE(tiny.h, 1);
     EXPECT_EQ(letterbox(10, 10, 0, 5).w, 0);
     const glm::dvec2 p = windowToFrame(wide, 1280, 720, {320.0, 240.0});
@@ -406,7 +406,7 @@ TEST(ViewerFiles, ListsScenesRecentAndFreeNames) {
 TEST(ViewerState, TextHoldsTheViewLightAndMaterial) {
     ViewerModel m = loadedModel();
     m.rotate(10.0, 0.0);
-    m.scene.material.ks = 0.25;
+    m.scene.lighting.material.ks = 0.25;
     m.prepareFrame(640, 360);
     const auto state = parseState(stateText(m, 42));
     EXPECT_EQ(state.at("frames"), "42");

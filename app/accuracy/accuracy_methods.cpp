@@ -11,7 +11,7 @@ RenderSettings baseSettings(const Scene& scene) {
     s.interp = Interp::Perspective;
     s.filter = TextureFilter::Trilinear;
     s.lighting = Lighting::Phong;  // the exact lighting, so other axes show their own error
-    if (scene.texture && !scene.mesh.uvs.empty()) {
+    if (scene.texture && !scene.mesh->uvs.empty()) {
         s.shader = ShaderKind::Texture;
         s.combine = true;  // so the lighting axis changes the picture
     } else {
@@ -44,7 +44,7 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSett
     }
     add("interp", "perspective", [](RenderSettings& s) { s.interp = Interp::Perspective; });
     const bool textured =
-        base.shader == ShaderKind::Texture && scene.texture && !scene.mesh.uvs.empty();
+        base.shader == ShaderKind::Texture && scene.texture && !scene.mesh->uvs.empty();
     if (textured) {
         add("filter", "nearest", [](RenderSettings& s) { s.filter = TextureFilter::Nearest; });
         add("filter", "bilinear", [](RenderSettings& s) { s.filter = TextureFilter::Bilinear; });

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -29,22 +30,6 @@ struct Subject {
     Scene scene;
 };
 
-/// Vertex colours from the position in the bounding box, so interpolation errors show as colour
-/// differences (the shared meshes are white or textured).
-void colourByPosition(Mesh& mesh) {
-    const Bounds b = computeBounds(mesh);
-    const glm::vec3 size = glm::max(b.max - b.min, glm::vec3(1e-30f));
-    mesh.colors.clear();
-    for (const auto& p : mesh.positions) mesh.colors.push_back((p - b.min) / size);
-}
-
-/// Resizes the camera's image, keeping the framing (focal length scaled with the width).
-void resize(Camera& camera, int w, int h) {
-    camera.focal *= static_cast<double>(w) / camera.width;
-    camera.width = w;
-    camera.height = h;
-}
-
 /// Spot and the bunny from the shared data; a procedural torus knot when neither loads, so the
 /// sweep always runs.
 std::vector<Subject> subjects(const std::string& shared, int w, int h) {
@@ -56,14 +41,15 @@ std::vector<Subject> subjects(const std::string& shared, int w, int h) {
         if (!loaded) continue;
         Subject s{name, std::move(loaded).value()};
         s.scene.texture.reset();
-        colourByPosition(s.scene.mesh);
-        resize(s.scene.camera, w, h);
+        s.scene.mesh = std::make_shared<const Mesh>(colouredByPosition(*s.scene.mesh));
+        // The framing stays (focal length scaled with the width, as render --size).
+        s.scene.camera = resizedCamera(s.scene.camera, w, h);
         out.push_back(std::move(s));
     }
     if (out.empty()) {
         Subject s{"knot", {}};
-        s.scene.mesh = makeTorusKnot(2, 3, 192, 16);
-        const Bounds b = computeBounds(s.scene.mesh);
+        s.scene.mesh = std::make_shared<const Mesh>(makeTorusKnot(2, 3, 192, 16));
+        const Bounds b = computeBounds(*s.scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
         s.scene.camera.look = centre;
         s.scene.camera.eye =
@@ -139,7 +125,7 @@ std::vector<CameraPoint> sweepCameraPaths(const SweepOptions& options) {
     // Through the mesh on a line that crosses it, so the near plane cuts it in the middle frames.
     for (const Subject& m : meshes) {
         Scene scene = m.scene;
-        const Bounds b = computeBounds(scene.mesh);
+        const Bounds b = computeBounds(*scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
         const glm::dvec3 dir = glm::normalize(glm::dvec3(-0.7, 0.15, 0.6));
         const double extent = b.diagonal();
@@ -158,11 +144,11 @@ std::vector<CameraPoint> sweepCameraPaths(const SweepOptions& options) {
     {
         const Subject& m = meshes.back();
         Scene scene = m.scene;
-        const Bounds b = computeBounds(scene.mesh);
+        const Bounds b = computeBounds(*scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
-        const double nearPlane = resolveNearPlane(RenderSettings{}, scene.mesh);
-        glm::dvec3 surface = scene.mesh.positions[0];
-        for (const auto& q : scene.mesh.positions)
+        const double nearPlane = resolveNearPlane(RenderSettings{}, *scene.mesh);
+        glm::dvec3 surface = scene.mesh->positions[0];
+        for (const auto& q : scene.mesh->positions)
             if (q.z > surface.z) surface = q;
         const glm::dvec3 outward = glm::normalize(surface - centre);
         const std::vector<double> ks =
@@ -187,7 +173,7 @@ std::vector<CameraPoint> sweepCameraPaths(const SweepOptions& options) {
     // there.
     for (const Subject& m : meshes) {
         Scene scene = m.scene;
-        const Bounds b = computeBounds(scene.mesh);
+        const Bounds b = computeBounds(*scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
         const glm::dvec3 away = scene.camera.eye - centre;
         // The camera frame of conventions §4; it does not change as the eye backs away.
@@ -212,7 +198,7 @@ std::vector<CameraPoint> sweepCameraPaths(const SweepOptions& options) {
     {
         const Subject& m = meshes.back();
         Scene scene = m.scene;
-        const Bounds b = computeBounds(scene.mesh);
+        const Bounds b = computeBounds(*scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
         const double distance = glm::length(scene.camera.eye - scene.camera.look);
         scene.camera.look = centre;

@@ -5,6 +5,8 @@
 #include "facet/evaluation/frame_times.hpp"
 
 #include <algorithm>
+#include <memory>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -21,18 +23,19 @@ namespace {
 /// (the point facing both) falls inside a face rather than on a vertex; specular only.
 Scene highlightScene(int rings, double shininess) {
     Scene scene;
-    scene.mesh = makeUvSphere(rings, 2 * rings);
-    scene.mesh.colors.assign(scene.mesh.positions.size(), glm::vec3(1.0f));
+    Mesh sphere = makeUvSphere(rings, 2 * rings);
+    sphere.colors.assign(sphere.positions.size(), glm::vec3(1.0f));
+    scene.mesh = std::make_shared<const Mesh>(std::move(sphere));
     const glm::dvec3 dir = glm::normalize(glm::dvec3(0.31, -0.23, -1.0));
     scene.camera.eye = 4.0 * dir;
     scene.camera.look = {0.0, 0.0, 0.0};
     scene.camera.up = {0.0, -1.0, 0.0};
     scene.camera.width = scene.camera.height = 96;
     scene.camera.focal = 150.0;
-    scene.ambient = 0.0;
-    scene.light.position = glm::dvec4(4.0 * dir, 1.0);
-    scene.light.intensity = 1.0;
-    scene.material = {.ka = 0.0, .kd = 0.0, .ks = 1.0, .s = shininess};
+    scene.lighting.ambient = 0.0;
+    scene.lighting.light.position = glm::dvec4(4.0 * dir, 1.0);
+    scene.lighting.light.intensity = 1.0;
+    scene.lighting.material = {.ka = 0.0, .kd = 0.0, .ks = 1.0, .s = shininess};
     return scene;
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -39,9 +40,8 @@ std::int64_t snapUnits(double v, int bits) {
 Scene triangleIdScene(const Scene& scene) {
     Scene ids = scene;
     ids.texture.reset();
-    Mesh& m = ids.mesh;
-    m = Mesh{};
-    const Mesh& src = scene.mesh;
+    Mesh m;
+    const Mesh& src = *scene.mesh;
     const std::size_t n = src.triangleCount();
     m.positions.reserve(3 * n);
     m.colors.reserve(3 * n);
@@ -58,6 +58,7 @@ Scene triangleIdScene(const Scene& scene) {
             m.indices.push_back(static_cast<std::uint32_t>(m.indices.size()));
         }
     }
+    ids.mesh = std::make_shared<const Mesh>(std::move(m));
     return ids;
 }
 
@@ -143,8 +144,8 @@ Counts countLayers(Renderer& renderer, const Scene& scene, const std::vector<glm
     RenderSettings s;
     s.subPixelBits = bits;
     const DrawInput in{.clip = clip,
-                       .indices = scene.mesh.indices,
-                       .nearPlane = static_cast<float>(resolveNearPlane(s, scene.mesh))};
+                       .indices = scene.mesh->indices,
+                       .nearPlane = static_cast<float>(resolveNearPlane(s, *scene.mesh))};
     Counts c;
     const Camera& cam = scene.camera;
     renderer.countCoverage(in, s, cam.width, cam.height, c.all);
@@ -179,9 +180,7 @@ std::optional<Scene> sharedScene(const std::string& shared, const std::string& f
     Camera& cam = scene.camera;
     const int height = std::max(
         1, static_cast<int>(std::lround(static_cast<double>(cam.height) * width / cam.width)));
-    cam.focal *= static_cast<double>(width) / cam.width;  // the framing stays (render --size)
-    cam.width = width;
-    cam.height = height;
+    cam = resizedCamera(cam, width, height);  // the framing stays (render --size)
     return scene;
 }
 
@@ -206,10 +205,10 @@ void sweepScene(const std::string& name, const Scene& scene, const SweepOptions&
     // Renderer::render computes them) and the open boundary.
     const glm::dmat4 clipFromWorldD = clipFromWorld(cam);
     std::vector<glm::vec4> clip;
-    clip.reserve(scene.mesh.positions.size());
-    for (const glm::vec3& p : scene.mesh.positions)
+    clip.reserve(scene.mesh->positions.size());
+    for (const glm::vec3& p : scene.mesh->positions)
         clip.push_back(glm::vec4(clipFromWorldD * glm::dvec4(glm::dvec3(p), 1.0)));
-    const auto open = openEdges(scene.mesh);
+    const auto open = openEdges(*scene.mesh);
 
     Renderer renderer;
     Framebuffer frame;
@@ -222,7 +221,7 @@ void sweepScene(const std::string& name, const Scene& scene, const SweepOptions&
         p.bits = bits;
         p.width = cam.width;
         p.height = cam.height;
-        p.triangles = scene.mesh.triangleCount();
+        p.triangles = scene.mesh->triangleCount();
         p.covered = covered;
 
         renderer.render(ids, idSettings(bits), frame);
@@ -277,11 +276,11 @@ Scene subPixelScene(const std::string& name, int width, int height) {
     cam.width = width;
     cam.height = height;
     cam.up = {0.0, -1.0, 0.0};
-    scene.light.position = {2.0, 3.0, 4.0, 1.0};
+    scene.lighting.light.position = {2.0, 3.0, 4.0, 1.0};
     if (name == "fan") {
         // 720 slivers of half a degree around one vertex: at the rim 0.9 px apart, near the
         // centre far thinner than any grid step. Tilted, so no edge lines up with the grid.
-        Mesh& m = scene.mesh;
+        Mesh m;
         constexpr int kSlices = 720;
         m.positions.push_back({0.0f, 0.0f, 0.0f});
         m.colors.push_back({1.0f, 1.0f, 1.0f});
@@ -294,10 +293,11 @@ Scene subPixelScene(const std::string& name, int width, int height) {
         }
         for (std::uint32_t k = 0; k < kSlices; ++k)
             m.indices.insert(m.indices.end(), {0u, 1u + k, 1u + (k + 1) % kSlices});
+        scene.mesh = std::make_shared<const Mesh>(std::move(m));
         cam.eye = {0.31, -0.47, 3.0};
         cam.look = {0.013, 0.021, 0.0};
     } else {  // "sphere": slivers at the poles, a silhouette all around
-        scene.mesh = makeUvSphere(16, 32);
+        scene.mesh = std::make_shared<const Mesh>(makeUvSphere(16, 32));
         cam.eye = {0.4, 1.1, 3.2};
         cam.look = {0.0, 0.0, 0.0};
     }

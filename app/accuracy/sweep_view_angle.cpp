@@ -133,7 +133,7 @@ std::vector<ViewAnglePoint> sweepViewAngle(const SweepOptions& options) {
     Framebuffer fb;
     for (const Surface& surface : surfaces) {
         Scene scene;
-        scene.mesh = texturedStrip(surface.length);
+        scene.mesh = std::make_shared<const Mesh>(texturedStrip(surface.length));
         scene.texture = texture;
         scene.camera.width = scene.camera.height = size;
         scene.camera.focal = 110.0 * size / 160.0;

@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
 #include "facet/scene_io.hpp"
@@ -21,9 +24,7 @@ constexpr int kCheckerCell = 32;
 /// Light and material shared by the generated scenes: a highlight somewhere in view, so Phong
 /// does real work on most pixels.
 void lightGenerated(Scene& scene, const glm::dvec4& light) {
-    scene.ambient = 0.4;
-    scene.light = Light{light, 1.0};
-    scene.material = Material{0.5, 0.7, 0.3, 20.0};
+    scene.lighting = {0.4, Light{light, 1.0}, Material{0.5, 0.7, 0.3, 20.0}};
 }
 
 }  // namespace
@@ -54,7 +55,7 @@ Scene sphereScene(int triangles, int width, int height) {
     Scene scene;
     scene.path = "sphere (generated)";
     scene.meshPath = scene.path;
-    scene.mesh = makeUvSphere(rings, 2 * rings);
+    scene.mesh = std::make_shared<const Mesh>(makeUvSphere(rings, 2 * rings));
     scene.texture = checkerTexture();
     scene.texturePath = scene.texture->name();
     const glm::dvec3 eye(0.0, 0.6, -3.0);
@@ -76,7 +77,7 @@ Scene overdrawScene(int layers, int width, int height) {
     scene.camera =
         Camera{glm::dvec3(0.0), glm::dvec3(0.0, 0.0, 1.0), glm::dvec3(0.0, -1.0, 0.0), focal, width,
                height};
-    Mesh& m = scene.mesh;
+    Mesh m;
     const float aspect = static_cast<float>(height) / static_cast<float>(width);
     // Back to front: the farthest layer is drawn first, every later one is nearer and wins.
     for (int layer = layers - 1; layer >= 0; --layer) {
@@ -96,6 +97,7 @@ Scene overdrawScene(int layers, int width, int height) {
         // (a, b, c) and (a, c, d) are counter-clockwise seen from the camera: they face it.
         m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     }
+    scene.mesh = std::make_shared<const Mesh>(std::move(m));
     scene.texture = checkerTexture();
     scene.texturePath = scene.texture->name();
     lightGenerated(scene, glm::dvec4(1.0, 1.0, 0.0, 1.0));
@@ -108,17 +110,15 @@ Result<Scene> fileScene(const std::string& path, int width, int height) {
     Scene scene = std::move(loaded).value();
     if (width > 0 && height > 0) {
         // As `facet render --size`: the horizontal field of view stays.
-        scene.camera.focal *= static_cast<double>(width) / scene.camera.width;
-        scene.camera.width = width;
-        scene.camera.height = height;
+        scene.camera = resizedCamera(scene.camera, width, height);
     }
     return scene;
 }
 
 std::string completeForTexturing(Scene& scene, const std::string& fallbackTexture) {
     std::string added;
-    Mesh& m = scene.mesh;
-    if (!m.hasUvs() && m.vertexCount() > 0) {
+    if (!scene.mesh->hasUvs() && scene.mesh->vertexCount() > 0) {
+        Mesh m = *scene.mesh;  // shared and immutable: the uvs go on a copy
         const Bounds b = computeBounds(m);
         const glm::vec3 ext = b.max - b.min;
         // Project along the smallest axis, so the image lies on the mesh's broadest side.
@@ -131,6 +131,7 @@ std::string completeForTexturing(Scene& scene, const std::string& fallbackTextur
         m.uvs.reserve(m.vertexCount());
         for (const glm::vec3& p : m.positions)
             m.uvs.emplace_back((p[ua] - b.min[ua]) * scale, (p[va] - b.min[va]) * scale);
+        scene.mesh = std::make_shared<const Mesh>(std::move(m));
         added = "planar uvs";
     }
     if (!scene.texture) {

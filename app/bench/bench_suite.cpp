@@ -151,7 +151,7 @@ Result<BenchSuite> buildSuite(const BenchOptions& o) {
 }
 
 std::size_t triangleCount(const BenchCase& c) {
-    return c.scene.mesh.triangleCount();
+    return c.scene.mesh->triangleCount();
 }
 
 std::size_t pixelCount(const BenchCase& c) {

@@ -142,7 +142,7 @@ std::size_t uploadMesh(RendererState& s, const Mesh& mesh, const Variant& v,
 /// after the main pass; under the depth test except with Simple, as in the engine.
 Status drawNormals(RendererState& s, const Scene& scene, const RenderSettings& settings,
                    const std::vector<glm::vec3>& normals, const FrameUniforms& u, GlStats& stats) {
-    const Mesh& mesh = scene.mesh;
+    const Mesh& mesh = *scene.mesh;
     const float length = settings.normalLength > 0.0 ? static_cast<float>(settings.normalLength)
                                                      : normalDisplayLength(mesh);
     normalSegments(mesh, normals, length, s.segments);
@@ -213,7 +213,7 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
     GlStats stats;
     const auto t0 = Clock::now();
     const Camera& cam = scene.camera;
-    const Mesh& mesh = scene.mesh;
+    const Mesh& mesh = *scene.mesh;
     const StateGuard guard(s.clipControl);
     if (Status st = s.target.resize(cam.width, cam.height)) return *st;
     frame.resize(cam.width, cam.height);
@@ -227,7 +227,7 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
                           glm::vec2(static_cast<float>(cam.width), static_cast<float>(cam.height)),
                           nearPlane,
                           settings.pointSize,
-                          prepareLighting(lightingParams(scene)),
+                          prepareLighting(scene.lighting),
                           glm::vec3(cam.eye)};
 
     std::vector<glm::vec3> normals;

@@ -32,29 +32,24 @@ std::string percent(double fraction) {
 
 AccuracyView accuracyView(const Scene& scene, std::uint64_t sceneVersion,
                           const RenderSettings& settings) {
-    return {sceneVersion, scene.texture,  scene.camera, scene.ambient,
-            scene.light,  scene.material, settings};
-}
-
-bool samePicture(const AccuracyView& a, const AccuracyView& b) {
-    const Camera& c = a.camera;
-    const Camera& d = b.camera;
-    return a.sceneVersion == b.sceneVersion && a.texture == b.texture && c.eye == d.eye &&
-           c.look == d.look && c.up == d.up && c.focal == d.focal && c.width == d.width &&
-           c.height == d.height && a.ambient == b.ambient && a.light.position == b.light.position &&
-           a.light.intensity == b.light.intensity && a.material.ka == b.material.ka &&
-           a.material.kd == b.material.kd && a.material.ks == b.material.ks &&
-           a.material.s == b.material.s;
+    return {{sceneVersion, scene.texture, scene.camera, scene.lighting}, settings};
 }
 
 bool sameMethod(const RenderSettings& a, const RenderSettings& b) {
-    // Subdivision counts only where it is used.
-    const bool subdivision = a.interp != Interp::Subdivided || a.subdivision == b.subdivision;
-    return a.shader == b.shader && a.interp == b.interp && subdivision &&
-           a.lighting == b.lighting && a.filter == b.filter && a.combine == b.combine &&
-           a.cullBackFaces == b.cullBackFaces && a.background == b.background &&
-           a.nearPlane == b.nearPlane && a.subPixelBits == b.subPixelBits &&
-           a.supersample == b.supersample;
+    // What a Solid render does not depend on is set alike, and the subdivision where it is not
+    // used; everything else (a field added later too) counts.
+    const auto method = [](RenderSettings s) {
+        const RenderSettings none;
+        s.mode = none.mode;
+        s.showNormals = none.showNormals;
+        s.normalLength = none.normalLength;
+        s.depthLegend = none.depthLegend;
+        s.pointSize = none.pointSize;
+        s.threads = none.threads;
+        if (s.interp != Interp::Subdivided) s.subdivision = none.subdivision;
+        return s;
+    };
+    return method(a) == method(b);
 }
 
 void markPareto(std::vector<AccuracyRow>& rows) {
@@ -73,7 +68,7 @@ void markPareto(std::vector<AccuracyRow>& rows) {
 }
 
 bool reportFresh(const AccuracyReport& report, const AccuracyView& now) {
-    if (!samePicture(report.view, now)) return false;
+    if (report.view.picture != now.picture) return false;
     return std::any_of(report.rows.begin(), report.rows.end(), [&now](const AccuracyRow& r) {
         return sameMethod(r.settings, now.settings);
     });

@@ -33,24 +33,30 @@ inline constexpr int kMaxAccuracySamples = 8;
 /// needing more than this is refused with a message.
 inline constexpr double kMaxAccuracyGigabytes = 4.0;
 
-/// What a measurement is of: the scene (by load count and texture), camera, light, material
-/// and the settings. Two views that compare equal render the same pictures.
-struct AccuracyView {
+/// What a picture shows besides the settings: the scene (by load count and texture), camera and
+/// lighting. Equal keys with equal settings render the same pictures.
+struct PictureKey {
     std::uint64_t sceneVersion = 0;
-    std::shared_ptr<const Texture> texture;
+    std::shared_ptr<const Texture> texture;  ///< compared by identity: a load makes a new one
     Camera camera;
-    double ambient = 0.0;
-    Light light;
-    Material material;
+    LightingParams lighting;
+
+    /// Every field equal.
+    bool operator==(const PictureKey&) const = default;
+};
+
+/// What a measurement is of: the picture and the settings.
+struct AccuracyView {
+    PictureKey picture;
     RenderSettings settings;  ///< as the user had them (any draw mode)
+
+    /// Every field equal.
+    bool operator==(const AccuracyView&) const = default;
 };
 
 /// The view of a scene as the viewer draws it.
 AccuracyView accuracyView(const Scene& scene, std::uint64_t sceneVersion,
                           const RenderSettings& settings);
-
-/// Same scene, texture, camera, light and material (the settings are not compared).
-bool samePicture(const AccuracyView& a, const AccuracyView& b);
 
 /// Same settings as far as the measured methods go: the ones a Solid render depends on.
 bool sameMethod(const RenderSettings& a, const RenderSettings& b);

@@ -32,17 +32,19 @@ void composeSplit(const Framebuffer& a, const Framebuffer& b, int column, Frameb
     }
 }
 
-void CompareView::renderSides(const Scene& scene, const RenderSettings& settings) {
+void CompareView::renderSides(const Scene& scene, const RenderSettings& settings,
+                              const CompareSettings& compare) {
     RenderSettings s = settings;
-    applyInterp(s, left);
+    applyInterp(s, compare.left);
     leftStats = leftRenderer.render(scene, s, leftFrame);
-    applyInterp(s, right);
+    applyInterp(s, compare.right);
     rightStats = rightRenderer.render(scene, s, rightFrame);
 }
 
-const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings& settings) {
-    renderSides(scene, settings);
-    return compose();
+const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings& settings,
+                                       const CompareSettings& compare) {
+    renderSides(scene, settings, compare);
+    return compose(compare);
 }
 
 ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, CompareDisplay display,
@@ -52,8 +54,9 @@ ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, Compar
     return diffImages(left, right);
 }
 
-const Framebuffer& CompareView::compose() {
-    diff = composeSides(leftFrame, rightFrame, display, divider, heatScale, shown);
+const Framebuffer& CompareView::compose(const CompareSettings& compare) {
+    diff = composeSides(leftFrame, rightFrame, compare.display, compare.divider, compare.heatScale,
+                        shown);
     return shown;
 }
 

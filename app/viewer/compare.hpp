@@ -17,8 +17,8 @@ enum class CompareDisplay {
     Difference,  ///< heat map of the per-pixel error (black: equal)
 };
 
-/// Two renders of one view and what differs between them.
-struct CompareView {
+/// The Compare panel's choices: plain data the panels edit and a frame compares with ==.
+struct CompareSettings {
     bool enabled = false;                       ///< the viewer shows this instead of one frame
     InterpSpec left{Interp::Affine, 16};        ///< interpolation of the left side
     InterpSpec right{Interp::Perspective, 16};  ///< interpolation of the right side
@@ -26,6 +26,12 @@ struct CompareView {
     CompareDisplay display = CompareDisplay::Split;
     int heatScale = 0;  ///< error shown brightest; 0: the largest error of the frame
 
+    /// Every field equal.
+    bool operator==(const CompareSettings&) const = default;
+};
+
+/// Two renders of one view and what differs between them: the renderers and buffers.
+struct CompareView {
     Renderer leftRenderer;  ///< separate instances: each keeps its own scratch buffers
     Renderer rightRenderer;
     Framebuffer leftFrame;
@@ -35,14 +41,16 @@ struct CompareView {
     RenderStats rightStats;
     ImageDiff diff;  ///< left against right, over the whole frame
 
-    /// Renders both sides with `settings`, each with its own interpolation.
-    void renderSides(const Scene& scene, const RenderSettings& settings);
+    /// Renders both sides with `settings`, each with the interpolation `compare` gives it.
+    void renderSides(const Scene& scene, const RenderSettings& settings,
+                     const CompareSettings& compare);
 
-    /// Compares the two sides and composes `shown` (split or heat map).
-    const Framebuffer& compose();
+    /// Compares the two sides and composes `shown` (split or heat map, as `compare` says).
+    const Framebuffer& compose(const CompareSettings& compare);
 
     /// renderSides() then compose().
-    const Framebuffer& render(const Scene& scene, const RenderSettings& settings);
+    const Framebuffer& render(const Scene& scene, const RenderSettings& settings,
+                              const CompareSettings& compare);
 };
 
 /// Compares `left` with `right` (the numbers over the whole frame) and composes `shown`: the

@@ -27,17 +27,6 @@
 #include "viewer_app.hpp"
 
 namespace facet::view {
-namespace {
-
-/// Everything the Compare view's composition depends on.
-bool sameCompare(const CompareView& a, const CompareView& b) {
-    return a.enabled == b.enabled && a.left.interp == b.left.interp &&
-           a.left.subdivision == b.left.subdivision && a.right.interp == b.right.interp &&
-           a.right.subdivision == b.right.subdivision && a.divider == b.divider &&
-           a.display == b.display && a.heatScale == b.heatScale;
-}
-
-}  // namespace
 
 int App::frame(Clock::time_point start, bool last) {
     int status = 0;
@@ -65,24 +54,17 @@ int App::frame(Clock::time_point start, bool last) {
     const AccuracyView engineView = accuracyView(model.scene, model.sceneVersion, model.settings);
     // The frame in hand is this one: leave the cores to the job.
     const bool skipEngine = accuracy.running() && plan.engine && !plan.twin && engineFresh &&
-                            samePicture(engineView, lastEngineView) &&
-                            engineView.settings == lastEngineView.settings &&
-                            sameCompare(compare, lastEngineCompare);
+                            engineView == lastEngineView && compare == lastEngineCompare;
     if (skipEngine) plan.engine = false;
     const auto tPanels = Clock::now();
 
     bool inFlight = false;
     double waited = 0.0;
     auto submit = [&] {
-        worker->submit(model.scene, model.sceneVersion, model.settings, compare);
+        worker->submit(model.scene, model.settings, compare);
         inFlight = true;
         lastEngineView = engineView;
-        lastEngineCompare.enabled = compare.enabled;
-        lastEngineCompare.left = compare.left;
-        lastEngineCompare.right = compare.right;
-        lastEngineCompare.divider = compare.divider;
-        lastEngineCompare.display = compare.display;
-        lastEngineCompare.heatScale = compare.heatScale;
+        lastEngineCompare = compare;
     };
     auto collect = [&] {
         if (!inFlight) return;
@@ -91,9 +73,9 @@ int App::frame(Clock::time_point start, bool last) {
         const RenderResult& r = worker->wait(display);
         waited += ms(w0, Clock::now());
         model.stats = r.stats;
-        compare.leftStats = r.stats;
-        compare.rightStats = r.rightStats;
-        if (r.compared) compare.diff = r.diff;
+        sides.leftStats = r.stats;
+        sides.rightStats = r.rightStats;
+        if (r.compared) sides.diff = r.diff;
         lastTimes.render = r.renderMs;
         lastTimes.compare = r.compareMs;
         ++rendererLog.engineFrames;

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "facet/camera.hpp"
 #include "renderer_choice.hpp"
 
 namespace facet::view {
@@ -26,7 +27,7 @@ bool parseSize(const std::string& text, int& width, int& height) {
     const auto r2 = std::from_chars(b + x + 1, e, h);
     if (r1.ec != std::errc{} || r1.ptr != b + x || r2.ec != std::errc{} || r2.ptr != e)
         return false;
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) return false;
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide) return false;
     width = w;
     height = h;
     return true;
@@ -99,7 +100,8 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     if (!size.empty() && !parseSize(size, o.width, o.height)) {
         out.exit = true;
         out.exitCode = 2;
-        out.text = "facet-view: --size wants WxH with 1..16384 each, got '" + size + "'";
+        out.text = "facet-view: --size wants WxH with 1.." + std::to_string(kMaxImageSide) +
+                   " each, got '" + size + "'";
         return out;
     }
     // The interpolation Compare and the CPU | OpenGL view share one divider: one at a time.

@@ -50,7 +50,7 @@ struct ParsedOptions {
 /// Parses argv (argv[0] is the program name).
 ParsedOptions parseOptions(int argc, const char* const* argv);
 
-/// Parses "WxH" with 1…16384 each.
+/// Parses "WxH" with 1…kMaxImageSide each.
 bool parseSize(const std::string& text, int& width, int& height);
 
 /// Applies the start-up settings to `settings`; an unknown name gives an error (parseOptions

@@ -38,8 +38,8 @@ void cameraPanel(App& app) {
 }
 
 void lightPanel(App& app) {
-    Scene& scene = app.model.scene;
-    Light& light = scene.light;
+    LightingParams& lighting = app.model.scene.lighting;
+    Light& light = lighting.light;
     ImGui::TextUnformatted("Light");
     dragDouble3("x y z", &light.position.x, 0.05);
     int kind = light.position.w == 0.0 ? 1 : 0;
@@ -48,10 +48,10 @@ void lightPanel(App& app) {
     if (ImGui::RadioButton("directional (w = 0)", &kind, 1)) light.position.w = 0.0;
     if (kind == 0 && light.position.w != 1.0)
         ImGui::TextDisabled("w = %.3g: the light sits at xyz / w", light.position.w);
-    sliderDouble("Ia (ambient)", scene.ambient, 0.0, 4.0);
+    sliderDouble("Ia (ambient)", lighting.ambient, 0.0, 4.0);
     sliderDouble("Id (light)", light.intensity, 0.0, 10.0);
 
-    Material& mat = scene.material;
+    Material& mat = lighting.material;
     ImGui::Separator();
     ImGui::TextUnformatted("Material");
     sliderDouble("Ka", mat.ka, 0.0, 2.0);

@@ -39,7 +39,7 @@ void sideLabels(const App& app, std::string& left, std::string& right) {
 }  // namespace
 
 void comparePanel(App& app) {
-    CompareView& c = app.compare;
+    CompareSettings& c = app.compare;
     const bool sideBySide = app.model.rendererChoice == RendererChoice::Split;
     bool on = c.enabled;
     if (ImGui::Checkbox("compare two interpolations", &on))
@@ -62,7 +62,7 @@ void comparePanel(App& app) {
     if (!c.enabled && !sideBySide) {
         ImGui::TextDisabled("(drag the divider on the image)");
     } else {
-        const ImageDiff& d = c.diff;
+        const ImageDiff& d = app.sides.diff;
         const double share = d.pixels ? 100.0 * static_cast<double>(d.pixelsDiffering) /
                                             static_cast<double>(d.pixels)
                                       : 0.0;
@@ -73,7 +73,7 @@ void comparePanel(App& app) {
 }
 
 void compareOverlay(App& app) {
-    const CompareView& c = app.compare;
+    const CompareSettings& c = app.compare;
     const Rect& v = app.view;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the frame, under the panels
     const ImU32 text = IM_COL32(255, 255, 255, 255);

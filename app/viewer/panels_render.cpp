@@ -75,7 +75,7 @@ void renderPanel(App& app) {
     ImGui::Checkbox("show normals", &s.showNormals);
     if (s.showNormals) {
         // 0 means the engine's default, a hundredth of the bounding-box diagonal.
-        const double diagonal = computeBounds(app.model.scene.mesh).diagonal();
+        const double diagonal = computeBounds(*app.model.scene.mesh).diagonal();
         sliderDouble("normal length", s.normalLength, 0.0, std::max(1e-6, 0.2 * diagonal),
                      s.normalLength > 0.0 ? "%.4f" : "auto");
     }

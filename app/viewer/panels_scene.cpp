@@ -23,9 +23,9 @@ std::string fileName(const std::string& path) {
 void scenePanel(App& app) {
     const Scene& scene = app.model.scene;
     ImGui::TextWrapped("%s", scene.path.c_str());
-    ImGui::TextDisabled("%zu vertices, %zu triangles%s%s", scene.mesh.vertexCount(),
-                        scene.mesh.triangleCount(), scene.mesh.hasColors() ? ", colours" : "",
-                        scene.mesh.hasUvs() ? ", uv" : "");
+    ImGui::TextDisabled("%zu vertices, %zu triangles%s%s", scene.mesh->vertexCount(),
+                        scene.mesh->triangleCount(), scene.mesh->hasColors() ? ", colours" : "",
+                        scene.mesh->hasUvs() ? ", uv" : "");
 
     const bool enter =
         ImGui::InputText("##scene", &app.ui.scenePath, ImGuiInputTextFlags_EnterReturnsTrue);
@@ -68,7 +68,7 @@ void texturePanel(App& app) {
                            scene.texture->levelCount());
     else
         ImGui::TextDisabled("no texture (the texture shader samples white)");
-    if (!scene.mesh.hasUvs()) ImGui::TextDisabled("this mesh has no texture coordinates");
+    if (!scene.mesh->hasUvs()) ImGui::TextDisabled("this mesh has no texture coordinates");
     const bool enter =
         ImGui::InputText("##texture", &app.ui.texturePath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();

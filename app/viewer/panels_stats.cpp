@@ -97,8 +97,8 @@ void statsWindow(App& app) {
     const Camera& c = app.model.scene.camera;
     ImGui::Text("frame %dx%d", c.width, c.height);
     if (plan.engineCompare) {
-        drawCounts("left: ", app.compare.leftStats);
-        drawCounts("right: ", app.compare.rightStats);
+        drawCounts("left: ", app.sides.leftStats);
+        drawCounts("right: ", app.sides.rightStats);
     } else if (plan.engine) {
         drawCounts(plan.twin ? "CPU: " : "", app.model.stats);
     }

@@ -18,28 +18,13 @@ RenderWorker::~RenderWorker() {
     thread_.join();
 }
 
-void RenderWorker::submit(const Scene& scene, std::uint64_t sceneVersion,
-                          const RenderSettings& settings, const CompareView& compare) {
+void RenderWorker::submit(const Scene& scene, const RenderSettings& settings,
+                          const CompareSettings& compare) {
     std::unique_lock lock(mutex_);
     cv_.wait(lock, [this] { return !pending_; });  // the caller should have waited already
-    // The small fields every frame; the mesh (megabytes for big models) only when it changed.
-    if (sceneVersion != sceneVersion_) {
-        scene_.mesh = scene.mesh;
-        sceneVersion_ = sceneVersion;
-    }
-    scene_.path = scene.path;
-    scene_.texture = scene.texture;
-    scene_.camera = scene.camera;
-    scene_.ambient = scene.ambient;
-    scene_.light = scene.light;
-    scene_.material = scene.material;
+    scene_ = scene;
     settings_ = settings;
-    compare_.enabled = compare.enabled;
-    compare_.left = compare.left;
-    compare_.right = compare.right;
-    compare_.divider = compare.divider;
-    compare_.display = compare.display;
-    compare_.heatScale = compare.heatScale;
+    compare_ = compare;
     pending_ = true;
     lock.unlock();
     cv_.notify_all();
@@ -52,7 +37,7 @@ const RenderResult& RenderWorker::wait(Framebuffer& shown) {
     // drawn into: both keep their capacity, so a steady size allocates nothing.
     if (fresh_) {
         if (result_.compared)
-            std::swap(shown, compare_.shown);
+            std::swap(shown, sides_.shown);
         else
             std::swap(shown, frame_);
         fresh_ = false;
@@ -70,14 +55,14 @@ void RenderWorker::loop() {
         RenderResult r;
         const auto t0 = Clock::now();
         if (compare_.enabled) {
-            compare_.renderSides(scene_, settings_);
+            sides_.renderSides(scene_, settings_, compare_);
             const auto t1 = Clock::now();
-            compare_.compose();
+            sides_.compose(compare_);
             r.renderMs = ms(t0, t1);
             r.compareMs = ms(t1, Clock::now());
-            r.stats = compare_.leftStats;
-            r.rightStats = compare_.rightStats;
-            r.diff = compare_.diff;
+            r.stats = sides_.leftStats;
+            r.rightStats = sides_.rightStats;
+            r.diff = sides_.diff;
             r.compared = true;
         } else {
             r.stats = renderer_.render(scene_, settings_, frame_);

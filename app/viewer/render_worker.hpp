@@ -2,13 +2,12 @@
 // The engine on a second thread. While the main thread uploads, draws and swaps frame N (on
 // llvmpipe that is several milliseconds of CPU work), the worker renders frame N+1, so a frame
 // costs about the larger of the two instead of their sum. The worker keeps its own copy of the
-// scene: the mesh is copied when a new scene is loaded, the view, light and material every
-// frame, so the panels edit the document freely while it renders.
+// scene (the mesh and texture are shared and immutable, so that copies pointers and a few
+// numbers), so the panels edit the document freely while it renders.
 //
 // Plain C++ threads, no GL: the unit tests drive it directly.
 
 #include <condition_variable>
-#include <cstdint>
 #include <mutex>
 #include <thread>
 
@@ -39,11 +38,9 @@ class RenderWorker {
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
 
-    /// Starts rendering `scene` (whose mesh is copied only when `sceneVersion` differs from
-    /// the last job's) with `settings`; with compare.enabled, both sides as `compare` says.
-    /// The previous job must have been collected with wait().
-    void submit(const Scene& scene, std::uint64_t sceneVersion, const RenderSettings& settings,
-                const CompareView& compare);
+    /// Starts rendering a copy of `scene` with `settings`; with compare.enabled, both sides as
+    /// `compare` says. The previous job must have been collected with wait().
+    void submit(const Scene& scene, const RenderSettings& settings, const CompareSettings& compare);
 
     /// Blocks until the submitted job is done, then swaps its picture into `shown` (no copy)
     /// and returns what it did. Without a job in flight it returns the last result unchanged.
@@ -60,9 +57,9 @@ class RenderWorker {
 
     // Owned by the worker while a job runs, by the caller otherwise.
     Scene scene_;
-    std::uint64_t sceneVersion_ = ~std::uint64_t{0};
     RenderSettings settings_;
-    CompareView compare_;
+    CompareSettings compare_;
+    CompareView sides_;  // the Compare job's renderers and frames
     Renderer renderer_;
     Framebuffer frame_;
     RenderResult result_;

@@ -78,12 +78,12 @@ FramePlan planFrame(RendererChoice choice, bool compareEnabled) {
     return p;
 }
 
-void selectRenderer(RendererChoice& current, RendererChoice wanted, CompareView& compare) {
+void selectRenderer(RendererChoice& current, RendererChoice wanted, CompareSettings& compare) {
     current = wanted;
     if (wanted != RendererChoice::Cpu) compare.enabled = false;
 }
 
-void setCompare(bool on, RendererChoice& current, CompareView& compare) {
+void setCompare(bool on, RendererChoice& current, CompareSettings& compare) {
     compare.enabled = on;
     if (on) current = RendererChoice::Cpu;
 }

@@ -52,10 +52,10 @@ FramePlan planFrame(RendererChoice choice, bool compareEnabled);
 
 /// Sets `current` to `wanted`. The twin and the interpolation Compare share the divider, so
 /// any choice but the CPU engine turns Compare off.
-void selectRenderer(RendererChoice& current, RendererChoice wanted, CompareView& compare);
+void selectRenderer(RendererChoice& current, RendererChoice wanted, CompareSettings& compare);
 
 /// Turns the interpolation Compare on or off; on, it goes back to the CPU engine.
-void setCompare(bool on, RendererChoice& current, CompareView& compare);
+void setCompare(bool on, RendererChoice& current, CompareSettings& compare);
 
 /// What the renderers did over a run, written to the --state file for tests.
 struct RendererLog {

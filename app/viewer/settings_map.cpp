@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "facet/camera.hpp"
+
 namespace facet::view {
 
 int nameIndex(const std::vector<std::string_view>& names, std::string_view name) {
@@ -40,14 +42,11 @@ std::string interpLabel(InterpSpec spec) {
 }
 
 Camera frameCamera(const Camera& scene, SizePolicy policy, int windowWidth, int windowHeight) {
-    Camera c = scene;
-    if (policy == SizePolicy::SceneSize) return c;
-    c.width = std::clamp(windowWidth, 1, 16384);
-    c.height = std::clamp(windowHeight, 1, 16384);
+    if (policy == SizePolicy::SceneSize) return scene;
     // Scaling f with the height keeps the vertical field of view; a wider window shows more at
     // the sides instead of cropping the top and bottom.
-    c.focal = scene.focal * static_cast<double>(c.height) / static_cast<double>(scene.height);
-    return c;
+    return resizedCamera(scene, std::clamp(windowWidth, 1, kMaxImageSide),
+                         std::clamp(windowHeight, 1, kMaxImageSide), KeepFov::Vertical);
 }
 
 }  // namespace facet::view

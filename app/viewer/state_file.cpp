@@ -36,12 +36,12 @@ std::string stateText(const ViewerModel& m, long long frames) {
     s << "up " << vec(c.up) << "\n";
     s << "size " << c.width << " " << c.height << "\n";
     s << "frame_focal " << num(c.focal) << "\n";
-    const Light& l = m.scene.light;
+    const Light& l = m.scene.lighting.light;
     s << "light " << num(l.position.x) << " " << num(l.position.y) << " " << num(l.position.z)
       << " " << num(l.position.w) << "\n";
-    s << "ambient " << num(m.scene.ambient) << "\n";
+    s << "ambient " << num(m.scene.lighting.ambient) << "\n";
     s << "intensity " << num(l.intensity) << "\n";
-    const Material& mat = m.scene.material;
+    const Material& mat = m.scene.lighting.material;
     s << "material " << num(mat.ka) << " " << num(mat.kd) << " " << num(mat.ks) << " " << num(mat.s)
       << "\n";
     s << "mode " << toString(m.settings.mode) << "\n";

@@ -41,9 +41,10 @@ bool renderTwin(App& app) {
 }
 
 const Framebuffer& composeSideBySide(App& app) {
-    CompareView& c = app.compare;
-    c.diff = composeSides(app.display, app.twin.frame, c.display, c.divider, c.heatScale, c.shown);
-    return c.shown;
+    const CompareSettings& c = app.compare;
+    CompareView& s = app.sides;
+    s.diff = composeSides(app.display, app.twin.frame, c.display, c.divider, c.heatScale, s.shown);
+    return s.shown;
 }
 
 }  // namespace facet::view

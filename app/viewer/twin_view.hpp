@@ -30,8 +30,8 @@ struct TwinView {
 bool renderTwin(App& app);
 
 /// Side by side: the engine's picture (app.display) left, the twin's right, composed into
-/// app.compare.shown with the Compare view's divider or difference; the numbers go to
-/// app.compare.diff. Returns the composed picture.
+/// app.sides.shown with the Compare view's divider or difference; the numbers go to
+/// app.sides.diff. Returns the composed picture.
 const Framebuffer& composeSideBySide(App& app);
 
 }  // namespace facet::view

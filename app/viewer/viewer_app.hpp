@@ -65,7 +65,8 @@ struct App {
     ViewerOptions options;
     GLFWwindow* window = nullptr;
     ViewerModel model;
-    CompareView compare;
+    CompareSettings compare;  ///< the Compare panel's choices
+    CompareView sides;        ///< two-sided frames' numbers and the CPU | OpenGL picture
     std::unique_ptr<GlFrame> gl;
     std::unique_ptr<RenderWorker> worker;  ///< the engine's thread
     Framebuffer display;                   ///< the engine's latest frame (from the worker)
@@ -87,10 +88,10 @@ struct App {
     bool vsyncApplied = true;          ///< the swap interval last set
     AccuracyJob accuracy;              ///< Compare: the methods against the ground truth
     std::uint64_t accuracySeen = 0;    ///< reports announced on stdout so far
-    /// The view and Compare state (its fields, not its frames) the engine last rendered, so a
-    /// frame can be skipped while the accuracy job measures (see frame_loop.cpp).
+    /// The view and Compare settings the engine last rendered, so a frame can be skipped while
+    /// the accuracy job measures (see frame_loop.cpp).
     AccuracyView lastEngineView;
-    CompareView lastEngineCompare;
+    CompareSettings lastEngineCompare;
 
     /// Runs until the window closes, --frames is reached or SIGTERM/SIGINT; returns the exit code.
     int run();

@@ -33,7 +33,7 @@ struct ViewerModel {
     RendererChoice rendererChoice = RendererChoice::Cpu;  ///< who draws: engine, twin or both
     SizePolicy sizePolicy = SizePolicy::FollowWindow;
     std::vector<std::string> recent;  ///< scene files opened, most recent first
-    std::uint64_t sceneVersion = 0;   ///< counts loads, so copies know when the mesh changed
+    std::uint64_t sceneVersion = 0;   ///< counts loads, so a measurement knows its scene
 
     Renderer renderer;  ///< keeps its scratch buffers from frame to frame
     Framebuffer frame;  ///< the last frame rendered

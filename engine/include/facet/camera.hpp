@@ -5,6 +5,8 @@
 // (X, Y, Z) maps to clip (f·X + w/2·Z, f·Y + h/2·Z, Z, Z), so pixel = clip.xy / clip.w and
 // clip.w is the depth Z. The third row keeps Z so nothing is lost; there is no far plane.
 
+#include <string>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -12,6 +14,20 @@
 #include "facet/scene.hpp"
 
 namespace facet {
+
+/// Largest image side in pixels (conventions §1): scene images, textures, --size, windows.
+inline constexpr int kMaxImageSide = 16384;
+
+/// Which field of view resizedCamera() keeps.
+enum class KeepFov {
+    Horizontal,  ///< focal scaled with the width (`facet render --size`)
+    Vertical,    ///< focal scaled with the height (the viewer following its window)
+};
+
+/// The camera for a width × height image: same pose, the focal length scaled so the framing
+/// along the `keep` axis stays. No clamping: the caller validates the size.
+Camera resizedCamera(const Camera& camera, int width, int height,
+                     KeepFov keep = KeepFov::Horizontal);
 
 /// Rigid transform world -> camera: rows x, y, z of the camera frame, origin at the eye.
 glm::dmat4 cameraFromWorld(const Camera& camera);

@@ -33,16 +33,6 @@
 
 namespace facet {
 
-/// Everything §6 needs besides the geometry, as plain fields a UI may change between frames.
-struct LightingParams {
-    double ambient = 1.0;  ///< Ia
-    Light light;           ///< homogeneous position (w = 0: the direction light comes from), Id
-    Material material;     ///< Ka, Kd, Ks, s (all ≥ 0)
-};
-
-/// The scene's lighting fields.
-LightingParams lightingParams(const Scene& scene);
-
 /// Unit vector from `p` towards the light: normalize(xyz / w − p), or normalize(xyz) for w = 0;
 /// zero where undefined.
 glm::dvec3 directionToLight(const glm::dvec3& p, const glm::dvec4& lightPosition);

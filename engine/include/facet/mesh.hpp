@@ -38,6 +38,9 @@ struct Bounds {
     glm::vec3 max{-1.0f};
     /// Length of the box diagonal, 0 for an empty mesh.
     float diagonal() const;
+
+    /// Every field equal.
+    bool operator==(const Bounds&) const = default;
 };
 
 /// Bounds of all positions.

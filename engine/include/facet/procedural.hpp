@@ -20,4 +20,8 @@ Mesh makeUvSphere(int rings, int sectors);
 /// Below 0.25 no triangle can fold over.
 Mesh makeJitteredGrid(int cols, int rows, float jitter, std::uint32_t seed);
 
+/// `mesh` with each vertex coloured by its place in the bounding box (x, y, z as r, g, b), so
+/// interpolation errors show as colour differences on a white or textured mesh.
+Mesh colouredByPosition(Mesh mesh);
+
 }  // namespace facet

@@ -77,6 +77,9 @@ std::optional<TextureFilter> parseFilter(std::string_view name);
 struct InterpSpec {
     Interp interp = Interp::Perspective;
     int subdivision = 16;  ///< N, meaningful for Subdivided only
+
+    /// Every field equal.
+    bool operator==(const InterpSpec&) const = default;
 };
 std::optional<InterpSpec> parseInterpSpec(std::string_view text);
 

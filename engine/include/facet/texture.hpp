@@ -12,9 +12,6 @@
 
 namespace facet {
 
-/// Largest accepted texture side, as for images (conventions §1).
-inline constexpr int kMaxTextureSize = 16384;
-
 /// One level of a mip chain: packed RGBA8 texels (R in the low byte, like Framebuffer::color),
 /// row-major, row 0 at the top of the image.
 struct MipLevel {
@@ -62,8 +59,8 @@ class Texture {
 };
 
 /// Reads a PNG, JPEG, BMP or TGA file (through stb_image) as RGBA8 and builds its mip chain.
-/// Missing, empty, corrupt or unsupported files and sides outside 1…16384 give an Error naming
-/// the file.
+/// Missing, empty, corrupt or unsupported files and sides outside 1…kMaxImageSide
+/// (facet/camera.hpp) give an Error naming the file.
 Result<Texture> loadTexture(const std::string& path);
 
 }  // namespace facet

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "facet/camera.hpp"
 #include "facet/reference.hpp"
 
 namespace facet {
@@ -38,10 +39,8 @@ RenderSettings groundTruthSettings(const RenderSettings& settings) {
 GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings, int samples,
                               const GroundTruthProgress& progress) {
     const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
-    Scene big = scene;  // the mesh is copied once; the texture is shared
-    big.camera.width = scene.camera.width * n;
-    big.camera.height = scene.camera.height * n;
-    big.camera.focal = scene.camera.focal * n;
+    Scene big = scene;  // the mesh and the texture are shared
+    big.camera = resizedCamera(scene.camera, scene.camera.width * n, scene.camera.height * n);
     // The reference render is nearly all of the time; the average after it is the last 1 %.
     reference::Progress renderProgress;
     if (progress) renderProgress = [&progress](double f) { return progress(0.99 * f); };

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "facet/camera.hpp"
 #include "facet/mesh_io.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
@@ -22,7 +24,6 @@ namespace facet {
 
 namespace {
 
-constexpr int maxImageSize = 16384;
 constexpr std::size_t requiredFields = 9;
 constexpr std::size_t maxFields = 10;
 
@@ -123,8 +124,8 @@ class SceneParser {
         if (!(v[0] >= 0.0)) {
             return error(fields[6], "ambient intensity Ia must be >= 0, got " + number(v[0]));
         }
-        s.ambient = v[0];
-        if (auto e = light(fields[7], s.light)) return *e;
+        s.lighting.ambient = v[0];
+        if (auto e = light(fields[7], s.lighting.light)) return *e;
         if (auto e = numbers(fields[8], names[8], "Ka Kd Ks s", 4, 4, v)) return *e;
         static const char* const coefficients[] = {"Ka", "Kd", "Ks", "s"};
         for (int i = 0; i < 4; ++i) {
@@ -133,7 +134,7 @@ class SceneParser {
                                             std::string(coefficients[i]) + " = " + number(v[i]));
             }
         }
-        s.material = {v[0], v[1], v[2], v[3]};
+        s.lighting.material = {v[0], v[1], v[2], v[3]};
 
         // 10: optional texture.
         if (fields.size() > requiredFields) {
@@ -200,9 +201,9 @@ class SceneParser {
         }
         static const char* const which[] = {"width", "height"};
         for (int i = 0; i < 2; ++i) {
-            if (size[i] < 1 || size[i] > maxImageSize) {
+            if (size[i] < 1 || size[i] > kMaxImageSide) {
                 return error(f, "image " + std::string(which[i]) + " must be 1 to " +
-                                    std::to_string(maxImageSize) + " pixels, got " +
+                                    std::to_string(kMaxImageSide) + " pixels, got " +
                                     std::to_string(size[i]));
             }
         }
@@ -288,7 +289,7 @@ Result<Scene> loadScene(const std::string& path) {
     auto mesh = loadMesh(meshFile);
     if (!mesh) return mesh.error();  // keeps the mesh file's own name and line
     scene.meshPath = meshFile;
-    scene.mesh = std::move(*mesh);
+    scene.mesh = std::make_shared<const Mesh>(std::move(*mesh));
 
     // The scene's own texture wins over the OBJ's map_Kd (conventions §3).
     if (!scene.texturePath.empty()) {
@@ -298,14 +299,14 @@ Result<Scene> loadScene(const std::string& path) {
                          "cannot load texture: " + texture.error().what()};
         }
         scene.texture = std::make_shared<const Texture>(std::move(*texture));
-    } else if (!scene.mesh.texturePath.empty()) {
-        auto texture = loadTexture(scene.mesh.texturePath);
+    } else if (!scene.mesh->texturePath.empty()) {
+        auto texture = loadTexture(scene.mesh->texturePath);
         if (!texture) {
             return Error{
                 {meshFile, 0},
                 "cannot load the map_Kd texture of its material: " + texture.error().what()};
         }
-        scene.texturePath = scene.mesh.texturePath;
+        scene.texturePath = scene.mesh->texturePath;
         scene.texture = std::make_shared<const Texture>(std::move(*texture));
     }
     return std::move(parsed->scene);

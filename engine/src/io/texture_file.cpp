@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "facet/camera.hpp"
+
 // Only the formats the conventions promise: less decoder surface for hostile files, and anything
 // else is reported as unsupported rather than half-working. Sizes are checked in loadTexture()
 // (stb's own cap is far larger) so the message can say what the limit is.
@@ -48,7 +50,7 @@ Error fileError(const std::string& path, std::string message) {
 Error sizeError(const std::string& path, std::uint64_t w, std::uint64_t h) {
     return fileError(path, "image is " + std::to_string(w) + "x" + std::to_string(h) +
                                " pixels; a texture side must be 1 to " +
-                               std::to_string(kMaxTextureSize));
+                               std::to_string(kMaxImageSide));
 }
 
 std::uint32_t bigEndian32(const unsigned char* p) {
@@ -69,7 +71,7 @@ Error headerError(const std::string& path, const std::vector<unsigned char>& byt
         if (bytes.size() >= 24 && std::equal(bytes.begin() + 12, bytes.begin() + 16, "IHDR")) {
             const std::uint32_t w = bigEndian32(bytes.data() + 16);
             const std::uint32_t h = bigEndian32(bytes.data() + 20);
-            if (w < 1 || h < 1 || w > kMaxTextureSize || h > kMaxTextureSize)
+            if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
                 return sizeError(path, w, h);
         }
         return fileError(path, "not a readable PNG image: its header is damaged");
@@ -106,7 +108,7 @@ Result<Texture> loadTexture(const std::string& path) {
         int w = 0, h = 0, channels = 0;
         if (!stbi_info_from_memory(bytes.data(), length, &w, &h, &channels))
             return headerError(path, bytes, stbi_failure_reason());
-        if (w < 1 || h < 1 || w > kMaxTextureSize || h > kMaxTextureSize)
+        if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
             return sizeError(path, static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(h));
 
         // Always four channels: grey, grey+alpha and RGB all become RGBA, one uint32 per texel.

@@ -5,14 +5,6 @@
 
 namespace facet::detail {
 
-Camera supersampledCamera(const Camera& camera, int n) {
-    Camera big = camera;
-    big.width = camera.width * n;
-    big.height = camera.height * n;
-    big.focal = camera.focal * n;
-    return big;
-}
-
 void resolveSupersampled(const Framebuffer& big, int n, Framebuffer& out, int threads) {
     const int w = big.width / n, h = big.height / n;
     out.resize(w, h);

@@ -2,19 +2,17 @@
 // Supersampling (RenderSettings::supersample): the frame rendered at N×N the size and averaged
 // down, so coverage, texture and lighting are sampled N² times per pixel. Costs about N² times a
 // frame; it is the engine's answer to silhouette aliasing, and a point on `facet accuracy`'s chart.
+//
+// The big image's camera is resizedCamera() to n times the size: width, height and focal times n.
+// The principal point is half the image (conventions §4), so big pixel (I + ½, J + ½) lands at
+// ((I + ½)/n, (J + ½)/n) in the frame's pixels: an even n×n grid of sample centres in each pixel.
 
-#include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 
 namespace facet::detail {
 
 /// Largest accepted samples per axis (16 per pixel).
 inline constexpr int kMaxSupersample = 4;
-
-/// The camera for the big image: width, height and focal times n. The principal point is half
-/// the image (conventions §4), so big pixel (I + ½, J + ½) lands at ((I + ½)/n, (J + ½)/n) in the
-/// frame's pixels: an even n×n grid of sample centres inside each pixel.
-Camera supersampledCamera(const Camera& camera, int n);
 
 /// Averages each n×n block of `big` into one pixel of `out` (resized to big / n): each channel
 /// the rounded mean (alpha too), depth the nearest of the block (empty only if all are).

@@ -158,8 +158,9 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     // The legend is drawn on the final frame, at its size, so it stays legible.
     RenderSettings big = settings;
     big.depthLegend = false;
-    RenderStats stats = impl_->renderView(*this, scene, supersampledCamera(scene.camera, n), big,
-                                          impl_->supersampled);
+    const Camera& cam = scene.camera;
+    RenderStats stats = impl_->renderView(
+        *this, scene, resizedCamera(cam, cam.width * n, cam.height * n), big, impl_->supersampled);
     Clock::time_point t = Clock::now();
     resolveSupersampled(impl_->supersampled, n, frame, resolveThreads(settings.threads));
     if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
@@ -178,13 +179,13 @@ RenderStats Renderer::Impl::renderView(Renderer& renderer, const Scene& scene, c
     const double clearMs = msSince(t);
 
     // Vertex stage: only the streams the settings need.
-    const Mesh& mesh = scene.mesh;
+    const Mesh& mesh = *scene.mesh;
     DrawInput input{.clip = vertices.transform(mesh, clipFromWorld(cam), threads),
                     .colors = mesh.colors,
                     .indices = mesh.indices,
                     .nearPlane = static_cast<float>(resolveNearPlane(settings, mesh)),
                     .texture = scene.texture.get(),
-                    .lighting = prepareLighting(lightingParams(scene)),
+                    .lighting = prepareLighting(scene.lighting),
                     .eye = glm::vec3(cam.eye)};
     // Lighting only changes colour: a depth image or a bare texel needs no normals.
     const bool lit = settings.lighting != Lighting::Off && usesColor(settings);

@@ -19,8 +19,8 @@ glm::dvec4 projectPoint(const Camera& cam, const glm::dvec3& world) {
 
 std::vector<glm::dvec4> projectScene(const Scene& scene) {
     std::vector<glm::dvec4> clip;
-    clip.reserve(scene.mesh.positions.size());
-    for (const glm::vec3& position : scene.mesh.positions) {
+    clip.reserve(scene.mesh->positions.size());
+    for (const glm::vec3& position : scene.mesh->positions) {
         clip.push_back(projectPoint(scene.camera, glm::dvec3(position)));
     }
     return clip;

@@ -28,14 +28,14 @@ std::vector<std::uint32_t> Image::toRgba() const {
 }
 
 std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings& settings) {
-    const std::vector<glm::vec3> normals = computeVertexNormals(scene.mesh);
+    const std::vector<glm::vec3> normals = computeVertexNormals(*scene.mesh);
     const double length = settings.normalLength > 0.0
                               ? settings.normalLength
-                              : static_cast<double>(normalDisplayLength(scene.mesh));
+                              : static_cast<double>(normalDisplayLength(*scene.mesh));
     std::vector<glm::dvec4> ends;
     for (std::size_t i = 0; i < normals.size(); ++i) {
         if (normals[i] == glm::vec3(0.0f)) continue;
-        const glm::dvec3 p(scene.mesh.positions[i]);
+        const glm::dvec3 p(scene.mesh->positions[i]);
         ends.push_back(projectPoint(scene.camera, p));
         ends.push_back(projectPoint(scene.camera, p + length * glm::dvec3(normals[i])));
     }
@@ -43,7 +43,7 @@ std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings&
 }
 
 Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
-    const Mesh& mesh = scene.mesh;
+    const Mesh& mesh = *scene.mesh;
     const std::size_t n = mesh.positions.size();
     const std::vector<glm::dvec4> clip = projectScene(scene);
     std::vector<glm::dvec3> positions(mesh.positions.begin(), mesh.positions.end());
@@ -56,12 +56,11 @@ Image render(const Scene& scene, const RenderSettings& settings, const Progress&
         const std::vector<glm::vec3> computed = computeVertexNormals(mesh);
         normals.assign(computed.begin(), computed.end());
     }
-    const LightingParams params = lightingParams(scene);
     if (settings.lighting == Lighting::Gouraud) {
         // Conventions §6, per vertex: colour = clamp(rgb · I), I from the formula in double.
         for (std::size_t i = 0; i < n; ++i) {
             const double intensity =
-                lightIntensity(positions[i], normals[i], scene.camera.eye, params);
+                lightIntensity(positions[i], normals[i], scene.camera.eye, scene.lighting);
             colors[i] = facet::shade(colors[i], intensity);
         }
     }
@@ -78,7 +77,7 @@ Image render(const Scene& scene, const RenderSettings& settings, const Progress&
     input.normalSegments = segments;
     input.nearPlane = resolveNearPlane(settings, mesh);
     input.texture = scene.texture.get();
-    input.lighting = params;
+    input.lighting = scene.lighting;
     input.eye = scene.camera.eye;
     return draw(input, settings, scene.camera.width, scene.camera.height, progress);
 }

@@ -59,9 +59,24 @@ std::string checkCamera(const Camera& camera) {
         return "y hint is zero or parallel to the viewing direction";
     if (!(camera.focal > 0.0) || !std::isfinite(camera.focal))
         return "focal length must be a positive number of pixels";
-    if (camera.width < 1 || camera.width > 16384 || camera.height < 1 || camera.height > 16384)
-        return "image size must be 1..16384 pixels in each direction";
+    if (camera.width < 1 || camera.width > kMaxImageSide || camera.height < 1 ||
+        camera.height > kMaxImageSide)
+        return "image size must be 1.." + std::to_string(kMaxImageSide) +
+               " pixels in each direction";
     return {};
+}
+
+Camera resizedCamera(const Camera& camera, int width, int height, KeepFov keep) {
+    Camera c = camera;
+    // Each rule keeps the order of operations its callers always used, so their images stay
+    // bit for bit what they were (f·(w/W) is exactly f·n for an n-times supersampled image).
+    if (keep == KeepFov::Horizontal)
+        c.focal = camera.focal * (static_cast<double>(width) / camera.width);
+    else
+        c.focal = camera.focal * static_cast<double>(height) / static_cast<double>(camera.height);
+    c.width = width;
+    c.height = height;
+    return c;
 }
 
 }  // namespace facet

@@ -1,4 +1,4 @@
-// The scene's lighting inputs, and their folding into the float constants of the fast path (its
+// The scene's lighting inputs folded into the float constants of the fast path (its
 // per-pixel formula is shading/fast_lighting.hpp; the double one is reference/lighting.cpp).
 
 #include "facet/lighting.hpp"
@@ -18,10 +18,6 @@ float narrow(double x) {
 }
 
 }  // namespace
-
-LightingParams lightingParams(const Scene& scene) {
-    return LightingParams{scene.ambient, scene.light, scene.material};
-}
 
 FastLighting prepareLighting(const LightingParams& params) {
     // (x, y, z, w) and (−x, −y, −z, −w) are the same point; w ≥ 0 keeps xyz − w·p pointing at

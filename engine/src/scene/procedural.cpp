@@ -115,4 +115,12 @@ Mesh makeJitteredGrid(int cols, int rows, float jitter, std::uint32_t seed) {
     return m;
 }
 
+Mesh colouredByPosition(Mesh mesh) {
+    const Bounds b = computeBounds(mesh);
+    const glm::vec3 size = glm::max(b.max - b.min, glm::vec3(1e-30f));  // a flat axis gives 0
+    mesh.colors.clear();
+    for (const auto& p : mesh.positions) mesh.colors.push_back((p - b.min) / size);
+    return mesh;
+}
+
 }  // namespace facet

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "facet/camera.hpp"
+
 namespace facet {
 namespace {
 
@@ -84,10 +86,10 @@ Texture::Texture() : levels_{MipLevel{1, 1, {0xFFFFFFFFu}}}, name_("white") {}
 
 Result<Texture> Texture::fromRgba(int width, int height, std::vector<std::uint32_t> pixels,
                                   std::string name) {
-    if (width < 1 || height < 1 || width > kMaxTextureSize || height > kMaxTextureSize) {
+    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
         return Error{{name, 0},
                      "texture is " + std::to_string(width) + "x" + std::to_string(height) +
-                         " pixels; each side must be 1 to " + std::to_string(kMaxTextureSize)};
+                         " pixels; each side must be 1 to " + std::to_string(kMaxImageSide)};
     }
     if (pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
         return Error{{name, 0},
