@@ -814,8 +814,8 @@ TEST(SceneLoader, SharedScenes) {
     REQUIRE_SHARED();
     auto spot = facet::loadScene(shared("scenes/spot_1280x720.scene"));
     expectLoaded(spot);
-    EXPECT_EQ(spot->mesh.triangleCount(), 5856u);
-    EXPECT_TRUE(spot->mesh.hasUvs());
+    EXPECT_EQ(spot->mesh->triangleCount(), 5856u);
+    EXPECT_TRUE(spot->mesh->hasUvs());
     EXPECT_EQ(spot->camera.width, 1280);
     EXPECT_EQ(spot->camera.height, 720);
     ASSERT_FALSE(spot->texturePath.empty());
@@ -824,9 +824,9 @@ TEST(SceneLoader, SharedScenes) {
 
     auto bunny = facet::loadScene(shared("scenes/bunny_1920x1080.scene"));
     expectLoaded(bunny);
-    EXPECT_EQ(bunny->mesh.triangleCount(), 69451u);
+    EXPECT_EQ(bunny->mesh->triangleCount(), 69451u);
     EXPECT_EQ(bunny->camera.focal, 1950.0);
-    EXPECT_EQ(bunny->material.s, 20.0);
+    EXPECT_EQ(bunny->lighting.material.s, 20.0);
 }
 
 TEST(SceneLoader, ResolveScenePathRules) {
