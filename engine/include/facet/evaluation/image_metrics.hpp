@@ -12,7 +12,7 @@
 
 namespace facet {
 
-struct GroundTruth;
+struct GroundTruth;  // ground_truth.hpp
 
 /// How far an 8-bit image is from a truth, in 8-bit steps (1 LSB = 1/255).
 struct ImageError {
