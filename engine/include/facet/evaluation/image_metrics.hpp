@@ -42,4 +42,8 @@ ImageError measureError(std::span<const std::uint32_t> rgba, std::span<const std
 /// = 0, when the sizes differ).
 ImageError measureError(const Framebuffer& frame, const GroundTruth& truth);
 
+/// Compares a rendered frame with the ground truth of the same size over the pixels the truth
+/// covers fully (coverage 1) only: every field as measureError's, interiorRmse left 0.
+ImageError interiorError(const Framebuffer& frame, const GroundTruth& truth);
+
 }  // namespace facet
