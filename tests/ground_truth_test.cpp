@@ -142,6 +142,13 @@ TEST(GroundTruth, MetricsOnHandMadeImages) {
     EXPECT_NEAR(inner.rmse, std::sqrt(1.5), 1e-12);
     EXPECT_EQ(inner.interiorPixels, 1u);
     EXPECT_EQ(inner.interiorRmse, 0.0);
+    // The same pixels on their own: the covered one matches exactly.
+    const ImageError interior = facet::interiorError(small, edge);
+    EXPECT_EQ(interior.pixels, 1u);
+    EXPECT_EQ(interior.rmse, 0.0);
+    EXPECT_EQ(interior.maxError, 0.0);
+    edge.coverage = {1.0f, 0.5f};
+    EXPECT_NEAR(facet::interiorError(small, edge).rmse, std::sqrt(3.0), 1e-12);  // 3 steps, 1 of 3
 }
 
 TEST(GroundTruth, SettingsAreTheExactForms) {

@@ -20,6 +20,7 @@
 
 #include "facet/evaluation/ground_truth.hpp"
 #include "facet/evaluation/image_metrics.hpp"
+#include "facet/evaluation/reference_compare.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
@@ -65,37 +66,6 @@ std::shared_ptr<const Texture> sweepTexture(const std::string& shared) {
         if (t.ok()) return std::make_shared<const Texture>(std::move(t).value());
     }
     return generatedBricks();
-}
-
-/// Channel errors of `frame` against `truth` over the pixels the ground truth covers fully.
-ImageError interiorError(const Framebuffer& frame, const GroundTruth& truth) {
-    std::vector<std::uint32_t> got;
-    std::vector<glm::vec3> want;
-    for (std::size_t i = 0; i < truth.coverage.size(); ++i) {
-        if (truth.coverage[i] < 1.0f) continue;
-        got.push_back(frame.color[i]);
-        want.push_back(truth.color[i]);
-    }
-    return measureError(got, want);
-}
-
-/// RMS channel error against the reference's 8-bit image over its covered, unambiguous pixels.
-double referenceRmse(const Framebuffer& frame, const reference::Image& ref, int& maxOut) {
-    const std::vector<std::uint32_t> want = ref.toRgba();
-    double sum2 = 0.0;
-    std::size_t n = 0;
-    maxOut = 0;
-    for (std::size_t i = 0; i < want.size(); ++i) {
-        if (!std::isfinite(ref.depth[i]) || ref.ambiguous[i]) continue;
-        ++n;
-        for (int shift = 0; shift < 24; shift += 8) {
-            const int e = std::abs(static_cast<int>((frame.color[i] >> shift) & 0xFF) -
-                                   static_cast<int>((want[i] >> shift) & 0xFF));
-            sum2 += static_cast<double>(e) * e;
-            maxOut = std::max(maxOut, e);
-        }
-    }
-    return n ? std::sqrt(sum2 / (3.0 * static_cast<double>(n))) : 0.0;
 }
 
 }  // namespace
@@ -163,7 +133,9 @@ std::vector<ViewAnglePoint> sweepViewAngle(const SweepOptions& options) {
                 p.maxError = e.maxError;
                 p.over2Lsb = e.over2Lsb;
                 p.pixels = e.pixels;
-                p.rmseReference = referenceRmse(fb, ref, p.maxReference);
+                const ImageError onReference = errorAgainstReference(fb, ref);
+                p.rmseReference = onReference.rmse;
+                p.maxReference = static_cast<int>(onReference.maxError);
                 points.push_back(p);
             }
         }

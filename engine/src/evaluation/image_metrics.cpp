@@ -85,20 +85,30 @@ ImageError measureError(std::span<const std::uint32_t> rgba, std::span<const std
     return t.result();
 }
 
+namespace {
+
+bool sameSize(const Framebuffer& frame, const GroundTruth& truth) {
+    return frame.width == truth.width && frame.height == truth.height &&
+           frame.color.size() == truth.coverage.size() && frame.color.size() == truth.color.size();
+}
+
+}  // namespace
+
 ImageError measureError(const Framebuffer& frame, const GroundTruth& truth) {
-    if (frame.width != truth.width || frame.height != truth.height ||
-        frame.color.size() != truth.coverage.size())
-        return {};
+    if (!sameSize(frame, truth)) return {};
     ImageError e = measureError(frame.color, truth.color);
-    Totals interior;
-    for (std::size_t i = 0; i < frame.color.size(); ++i)
-        if (!(truth.coverage[i] < 1.0f))
-            interior.add(channels(frame.color[i]), channels(truth.color[i]));
+    const ImageError interior = interiorError(frame, truth);
     e.interiorPixels = interior.pixels;
-    if (interior.pixels > 0)
-        e.interiorRmse =
-            std::sqrt(interior.sumSquares / (3.0 * static_cast<double>(interior.pixels)));
+    e.interiorRmse = interior.rmse;
     return e;
+}
+
+ImageError interiorError(const Framebuffer& frame, const GroundTruth& truth) {
+    if (!sameSize(frame, truth)) return {};
+    Totals t;
+    for (std::size_t i = 0; i < frame.color.size(); ++i)
+        if (!(truth.coverage[i] < 1.0f)) t.add(channels(frame.color[i]), channels(truth.color[i]));
+    return t.result();
 }
 
 }  // namespace facet

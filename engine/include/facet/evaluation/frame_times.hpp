@@ -16,6 +16,7 @@ struct FrameTimes {
     double min = 0.0;     ///< fastest frame
     double max = 0.0;     ///< slowest frame
 
+    /// Field by field (a report measured once compares equal to itself).
     bool operator==(const FrameTimes&) const = default;
 };
 

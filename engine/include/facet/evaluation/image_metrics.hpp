@@ -12,7 +12,7 @@
 
 namespace facet {
 
-struct GroundTruth;
+struct GroundTruth;  // ground_truth.hpp
 
 /// How far an 8-bit image is from a truth, in 8-bit steps (1 LSB = 1/255).
 struct ImageError {
@@ -41,5 +41,9 @@ ImageError measureError(std::span<const std::uint32_t> rgba, std::span<const std
 /// Compares a rendered frame with the ground truth of the same size (an empty result, pixels
 /// = 0, when the sizes differ).
 ImageError measureError(const Framebuffer& frame, const GroundTruth& truth);
+
+/// Compares a rendered frame with the ground truth of the same size over the pixels the truth
+/// covers fully (coverage 1) only: every field as measureError's, interiorRmse left 0.
+ImageError interiorError(const Framebuffer& frame, const GroundTruth& truth);
 
 }  // namespace facet

@@ -1,9 +1,9 @@
 #pragma once
 // A frame against the reference image of the same input, judged only where the reference says
 // a correct renderer must agree (outside its ambiguity mask): the rules fast_vs_reference_test,
-// near_plane_test, stability_test and gl_twin_test assert and `facet sweeps` charts. A correct
-// fast path draws exactly the reference's pixels there (no coverage difference) with colours
-// within 1 LSB.
+// near_plane_test, stability_test and gl_twin_test assert and `facet sweeps` charts, and the
+// error interp_accuracy_test bounds. A correct fast path draws exactly the reference's pixels
+// there (no coverage difference) with colours within 1 LSB.
 
 #include <cstddef>
 #include <cstdint>
