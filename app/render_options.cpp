@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "facet/limits.hpp"
 #include "facet/scene_io.hpp"
 
 namespace facet::app {
@@ -150,6 +151,10 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         scene.camera.width = w;
         scene.camera.height = h;
     }
+    // Refused before the renderer allocates anything (limits.hpp).
+    if (auto problem =
+            frameMemoryProblem(scene.camera.width, scene.camera.height, settings.supersample))
+        return bad(*problem);
     return kOk;
 }
 

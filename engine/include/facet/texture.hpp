@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "facet/limits.hpp"
 
 namespace facet {
 
 /// Largest accepted texture side, as for images (conventions §1).
-inline constexpr int kMaxTextureSize = 16384;
+inline constexpr int kMaxTextureSize = kMaxImageSide;
 
 /// One level of a mip chain: packed RGBA8 texels (R in the low byte, like Framebuffer::color),
 /// row-major, row 0 at the top of the image.
@@ -61,9 +62,9 @@ class Texture {
     std::string name_;
 };
 
-/// Reads a PNG, JPEG, BMP or TGA file (through stb_image) as RGBA8 and builds its mip chain.
-/// Missing, empty, corrupt or unsupported files and sides outside 1…16384 give an Error naming
-/// the file.
+/// Reads a PNG (libpng), JPEG (libjpeg-turbo), BMP or TGA (stb_image) file as RGBA8 and builds
+/// its mip chain. Missing, empty, corrupt, unsupported or over-limit files (limits.hpp) and sides
+/// outside 1…16384 give an Error naming the file.
 Result<Texture> loadTexture(const std::string& path);
 
 }  // namespace facet
