@@ -35,9 +35,10 @@ inline constexpr std::uint64_t kBytesPerTriangle = 12;
 /// Most corners of one OBJ face: tinyobjloader keeps the count in 8 bits.
 inline constexpr std::size_t kMaxObjFaceCorners = 255;
 
-/// Most scans a progressive JPEG may have; each costs a pass over the image (libjpeg-turbo's own
-/// fuzzers stop at 500), so a file of thousands of tiny scans cannot keep the decoder busy.
-inline constexpr int kMaxJpegScans = 500;
+/// Most scans a progressive JPEG may have. Each costs a pass over the image, so a file of
+/// thousands of tiny scans could keep the decoder busy for minutes; encoders write about 10
+/// (libjpeg's default progression), libjpeg-turbo suggests a limit of 500 for its own tools.
+inline constexpr int kMaxJpegScans = 100;
 
 /// Bytes of a frame's buffers at `width` x `height` with `supersample` x `supersample` samples.
 std::uint64_t frameBytes(int width, int height, int supersample);
