@@ -1,11 +1,13 @@
 // The .scene parser on arbitrary text (the mesh and texture it names are not loaded).
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
 #include <glm/geometric.hpp>
 
+#include "facet/limits.hpp"
 #include "facet/scene_io.hpp"
 #include "fuzz_check.hpp"
 
