@@ -199,3 +199,19 @@ TEST(ImageDecode, DamagedDataGivesClearErrors) {
     EXPECT_NE(header.error().message.find("JPEG image: its header is damaged"), std::string::npos)
         << header.error().what();
 }
+
+// Fuzz finding (a timeout): a 134-byte run-length TGA claiming 3855x3855 pixels; stb_image reads
+// zeros past the end and filled all 15 million. Refused from the header: no BMP or TGA packs
+// more than 64 pixels into a byte.
+TEST(ImageDecode, TgaClaimingMorePixelsThanItsBytesIsRefused) {
+    const Result<Texture> t = loadTexture(data("tex_tga_empty_claim.tga"));
+    ASSERT_FALSE(t.ok());
+    EXPECT_NE(t.error().message.find("image claims 3855x3855 pixels, more than a 134-byte BMP or "
+                                     "TGA file can hold"),
+              std::string::npos)
+        << t.error().what();
+    // A real run-length TGA (8x8 in 50 bytes) still loads.
+    const Result<Texture> rle = loadTexture(data("tex_tga_rle.tga"));
+    ASSERT_TRUE(rle.ok()) << rle.error().what();
+    EXPECT_EQ(rle->width(), 8);
+}

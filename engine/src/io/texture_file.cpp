@@ -58,6 +58,9 @@ bool startsWith(std::span<const unsigned char> bytes, std::span<const unsigned c
     return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
 }
 
+/// Most pixels one byte of a BMP or TGA file can describe (an 8-bit TGA run packet).
+constexpr std::uint64_t kMaxStbPixelsPerByte = 64;
+
 /// BMP and TGA through stb_image, its header first so a forged size allocates nothing.
 Result<DecodedImage> decodeStb(std::span<const unsigned char> bytes, const std::string& path,
                                const DecodeLimits& limits) {
@@ -72,6 +75,15 @@ Result<DecodedImage> decodeStb(std::span<const unsigned char> bytes, const std::
     if (w < 1 || h < 1 || w > limits.maxSide || h > limits.maxSide) {
         return imageSizeError(path, static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(h),
                               limits.maxSide);
+    }
+    // stb_image reads zeros past the end of the data and fills the whole claimed image: a
+    // 134-byte TGA claiming 3855x3855 (found by fuzzing) made it loop over 15 million pixels.
+    // The densest encoding either format has is an 8-bit TGA run, 128 pixels in 2 bytes.
+    if (static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) >
+        kMaxStbPixelsPerByte * bytes.size()) {
+        return fileError(path, "image claims " + std::to_string(w) + "x" + std::to_string(h) +
+                                   " pixels, more than a " + std::to_string(bytes.size()) +
+                                   "-byte BMP or TGA file can hold: it is damaged or truncated");
     }
     // Always four channels: grey, grey+alpha and RGB all become RGBA, one uint32 per texel.
     const std::unique_ptr<stbi_uc, void (*)(void*)> data(
