@@ -4,10 +4,12 @@
 
 BUILD      ?= build
 BUILD_ASAN ?= build-asan
+BUILD_CLANG ?= build-clang
+BUILD_FUZZ ?= build-fuzz
 CMAKE_ARGS ?=
 OUT        ?= out
 
-.PHONY: all setup build run test test-sanitize bench-kernels charts doc format clean
+.PHONY: all setup build run test test-sanitize test-clang fuzz bench-kernels charts doc format clean
 
 all: build
 
@@ -38,6 +40,27 @@ test-sanitize: setup
 	cd $(BUILD_ASAN) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j 2; s=$$?; bash $(CURDIR)/scripts/test-summary.sh; exit $$s
 
+# The engine, the CLI and the tests built with Clang, warnings as errors (the viewer stays with
+# GCC's build), and run.
+test-clang: setup
+	cmake -S . -B $(BUILD_CLANG) -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+	  -DFACET_WERROR=ON -DFACET_BUILD_VIEWER=OFF $(CMAKE_ARGS)
+	cmake --build $(BUILD_CLANG)
+	cd $(BUILD_CLANG) && ctest --output-on-failure -j 2
+
+# The libFuzzer targets (fuzz/) with AddressSanitizer and UndefinedBehaviorSanitizer, each run for
+# FUZZ_SECONDS on its seed corpus; fails on any finding (README, "Fuzzing"). -O1 with line tables
+# only, as libFuzzer's documentation suggests: stack traces name lines, and it builds fast.
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?= scene off obj texture render
+fuzz: setup
+	cmake -S . -B $(BUILD_FUZZ) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
+	  -DCMAKE_CXX_COMPILER=clang++ -DFACET_FUZZ=ON -DFACET_SANITIZE=address,undefined \
+	  -DFACET_BUILD_TESTS=OFF -DFACET_BUILD_VIEWER=OFF $(CMAKE_ARGS)
+	cmake --build $(BUILD_FUZZ) --target fuzz_targets
+	bash scripts/run-fuzz.sh $(BUILD_FUZZ) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
 # Kernel micro-benchmarks (tests/kernels_bench.cpp) from the Release build. Each runs 5 times and
 # only the aggregates (mean, median, stddev, cv) are shown, since one run on a busy machine can be
 # far off; compare medians. BENCH_ARGS overrides, e.g. BENCH_ARGS=--benchmark_filter=shade/.
@@ -65,4 +88,4 @@ format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp' | grep -v '^third_party/')
 
 clean:
-	rm -rf $(BUILD) $(BUILD_ASAN) $(OUT)
+	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD_CLANG) $(BUILD_FUZZ) $(OUT)

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/frame_times.hpp"
+#include "facet/limits.hpp"
 #include "facet/scene_io.hpp"
 
 namespace facet::app {
@@ -150,6 +151,10 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
                        " each, got '" + o.size + "'");
         scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
     }
+    // Refused before the renderer allocates anything (limits.hpp).
+    if (auto problem =
+            frameMemoryProblem(scene.camera.width, scene.camera.height, settings.supersample))
+        return bad(*problem);
     return kOk;
 }
 

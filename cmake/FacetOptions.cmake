@@ -24,3 +24,12 @@ if(FACET_SANITIZE)
   endforeach()
   target_compile_options(facet_options INTERFACE -fno-omit-frame-pointer -fno-sanitize-recover=all)
 endif()
+# Fuzzing: the engine and everything linked with it get libFuzzer's coverage instrumentation; the
+# fuzz targets themselves link libFuzzer's main (fuzz/CMakeLists.txt).
+if(FACET_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "FACET_FUZZ needs Clang's libFuzzer: configure with "
+                        "-DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  target_compile_options(facet_options INTERFACE -fsanitize=fuzzer-no-link)
+endif()

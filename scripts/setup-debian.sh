@@ -6,6 +6,8 @@ pkgs=(build-essential cmake pkg-config
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libepoxy-dev libegl-dev libgl1-mesa-dri
   ninja-build
+  libpng-dev libjpeg62-turbo-dev  # PNG and JPEG textures (libpng, libjpeg-turbo)
+  clang libclang-rt-14-dev libomp-dev  # make test-clang and make fuzz (libFuzzer, sanitizers, OpenMP)
   libegl1 libegl-mesa0 libgbm1  # the OpenGL twin: EGL's surfaceless platform on Mesa (llvmpipe)
   xvfb xauth xdotool  # the viewer's tests: a virtual display and real input events
   gnuplot-nox)  # facet bench --chart

@@ -139,6 +139,20 @@ TEST_F(Cli, TextureErrorsNameTheImage) {
     EXPECT_FALSE(fs::exists(out("x.png")));
 }
 
+// A frame over kMaxFrameBytes is refused with the sizes before anything is allocated (the
+// command returns at once instead of being killed for memory).
+TEST_F(Cli, FramesOverTheMemoryLimitAreRefused) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    const Outcome r =
+        run("render " + scene + " -o " + out("x.png") + " --size 16384x16384 --supersample 4");
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_EQ(countLines(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find("16384x16384 frame at 4x4 supersampling needs 34.0 GiB"),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(out("x.png")));
+}
+
 // The commands, as a user types them, on the course and Spot scenes.
 TEST_F(Cli, ShadingCommandsOfTheCourse) {
     const std::string shared = facet::test::sharedData("");

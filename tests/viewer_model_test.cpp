@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <unistd.h>
 
@@ -129,6 +130,66 @@ TEST(ViewerModel, ABadTextureKeepsTheOldOne) {
     EXPECT_FALSE(m.loadTexture(data("tex_4x4.png")));
     EXPECT_NE(m.scene.texture.get(), before);
     EXPECT_EQ(m.scene.texture->width(), 4);
+}
+
+// The files of an open scene replaced on disk (a broken texture, a truncated mesh, a pipe, an
+// empty file): the loaded scene lives in memory, so frames stay the same, and reopening it fails
+// with the file's name and keeps the last good scene.
+TEST(ViewerModel, FilesReplacedOnDiskKeepTheLastGoodScene) {
+    const fs::path dir = fs::temp_directory_path() /
+                         ("facet-viewer-replaced-" +
+                          std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    fs::create_directories(dir);
+    for (const char* name : {"scene_texture.scene", "mesh_square.off", "texture_checker.png"})
+        fs::copy_file(data(name), dir / name, fs::copy_options::overwrite_existing);
+    const std::string scenePath = (dir / "scene_texture.scene").string();
+    ViewerModel m;
+    ASSERT_FALSE(m.load(scenePath));
+    m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
+    const std::vector<std::uint32_t> before = m.render().color;
+    const std::size_t triangles = m.scene.mesh->triangleCount();
+    const Texture* texture = m.scene.texture.get();
+
+    auto replace = [&](const char* name, const std::string& text) {
+        fs::remove(dir / name);
+        std::ofstream(dir / name, std::ios::binary) << text;
+    };
+    auto expectKept = [&](const std::string& what, const std::string& fileAtFault) {
+        m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
+        EXPECT_TRUE(m.render().color == before) << what << " changed the picture";
+        const Status error = m.load(scenePath);
+        ASSERT_TRUE(error) << what << ": reopening succeeded";
+        EXPECT_NE(error->what().find(fileAtFault), std::string::npos) << error->what();
+        EXPECT_EQ(m.scene.texture.get(), texture) << what;
+        EXPECT_EQ(m.scene.mesh->triangleCount(), triangles) << what;
+        m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
+        EXPECT_TRUE(m.render().color == before) << what << " changed the picture";
+    };
+    const std::string png = (dir / "texture_checker.png").string();
+    const std::string off = (dir / "mesh_square.off").string();
+    replace("texture_checker.png", "not an image any more");
+    expectKept("a texture replaced by text", png);
+    replace("texture_checker.png", "");
+    expectKept("an emptied texture", png);
+    fs::remove(png);
+    ASSERT_EQ(::mkfifo(png.c_str(), 0600), 0);
+    // Not a regular file: the scene's line 10 is reported as naming no file it can read.
+    expectKept("a texture replaced by a pipe", "'texture_checker.png' not found");
+    fs::remove(png);
+    fs::copy_file(data("texture_checker.png"), png);
+    std::string mesh;
+    {
+        std::ifstream in(data("mesh_square.off"), std::ios::binary);
+        mesh.resize(static_cast<std::size_t>(fs::file_size(data("mesh_square.off"))));
+        in.read(mesh.data(), static_cast<std::streamsize>(mesh.size()));
+    }
+    replace("mesh_square.off", mesh.substr(0, mesh.size() / 2));
+    expectKept("a truncated mesh", off);
+    // Put back, the scene opens again.
+    replace("mesh_square.off", mesh);
+    EXPECT_FALSE(m.load(scenePath));
+    std::error_code ec;
+    fs::remove_all(dir, ec);
 }
 
 TEST(ViewerModel, MouseMovesTheViewAndResetRestoresIt) {

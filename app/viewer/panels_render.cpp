@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "facet/limits.hpp"
 #include "facet/mesh.hpp"
 #include "gl_renderer.hpp"
 #include "panel_widgets.hpp"
@@ -89,7 +90,14 @@ void renderPanel(App& app) {
         // departs from these two, the twin's note above says so.)
         static const char* const kSamples[] = {"1 per pixel", "2 x 2", "3 x 3", "4 x 4"};
         int ss = std::clamp(s.supersample, 1, 4) - 1;
-        if (ImGui::Combo("samples", &ss, kSamples, 4)) s.supersample = ss + 1;
+        if (ImGui::Combo("samples", &ss, kSamples, 4)) {
+            // A frame over the memory limit is refused before the renderer allocates it.
+            const Camera& c = app.model.scene.camera;
+            if (auto problem = frameMemoryProblem(c.width, c.height, ss + 1))
+                showError(app, "Supersampling", *problem);
+            else
+                s.supersample = ss + 1;
+        }
     }
     float rgb[3];
     rgbFromHex(s.background, rgb);

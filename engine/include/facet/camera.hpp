@@ -11,12 +11,10 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "facet/limits.hpp"  // kMaxImageSide
 #include "facet/scene.hpp"
 
 namespace facet {
-
-/// Largest image side in pixels (conventions §1): scene images, textures, --size, windows.
-inline constexpr int kMaxImageSide = 16384;
 
 /// Which field of view resizedCamera() keeps.
 enum class KeepFov {

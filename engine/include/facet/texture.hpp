@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "facet/limits.hpp"
 
 namespace facet {
 
@@ -58,9 +59,9 @@ class Texture {
     std::string name_;
 };
 
-/// Reads a PNG, JPEG, BMP or TGA file (through stb_image) as RGBA8 and builds its mip chain.
-/// Missing, empty, corrupt or unsupported files and sides outside 1…kMaxImageSide
-/// (facet/camera.hpp) give an Error naming the file.
+/// Reads a PNG (libpng), JPEG (libjpeg-turbo), BMP or TGA (stb_image) file as RGBA8 and builds
+/// its mip chain. Missing, empty, corrupt, unsupported or over-limit files (limits.hpp) and sides
+/// outside 1…kMaxImageSide give an Error naming the file.
 Result<Texture> loadTexture(const std::string& path);
 
 }  // namespace facet

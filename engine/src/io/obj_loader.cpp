@@ -2,9 +2,10 @@
 //
 // tinyobjloader is lenient where this project wants errors: it reads "nan" or "abc" as 0, accepts
 // out-of-range indices with a warning (and its ear-clipper then reads past its arrays for
-// polygons of five or more corners) and reports most problems without a line. So the text is
-// first checked here, line by line; tinyobjloader then parses it without triangulating, and the
-// polygons are fanned here, as OFF polygons are, after every index has been checked.
+// polygons of five or more corners, in quadratic time) and reports most problems without a line.
+// So the text is first checked here, line by line; tinyobjloader then parses that same text
+// without triangulating, and the polygons are fanned here, as OFF polygons are, after every index
+// has been checked. Material files are read through MtlReader, under the same size limit.
 //
 // A map_Kd texture is resolved relative to the .obj's folder and kept even when that file is
 // missing: the texture loader then reports the path it could not open, which tells the user more
@@ -13,7 +14,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -21,6 +24,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include "facet/limits.hpp"
 #include "facet/mesh_io.hpp"
 #include "io/text_scan.hpp"
 
@@ -29,11 +33,46 @@ namespace facet {
 namespace {
 
 // tinyobjloader stores a face's corner count in an unsigned char.
-constexpr std::size_t maxFaceCorners = 255;
+constexpr std::size_t maxFaceCorners = kMaxObjFaceCorners;
 
 // What the line check learned: the line of every face, in the order tinyobjloader lists faces.
 struct ObjLines {
     std::vector<int> faceLines;
+};
+
+// Opens the .mtl files an OBJ names as tinyobjloader's own reader does (relative to the OBJ's
+// folder), but refuses what is not a regular file or exceeds kMaxFileBytes: "mtllib /dev/zero"
+// must not read forever.
+class MtlReader : public tinyobj::MaterialReader {
+  public:
+    explicit MtlReader(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warn,
+                    std::string* err) override {
+        const std::string path =
+            (folder_.empty() ? std::filesystem::path(name) : folder_ / name).string();
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec)) {
+            if (warn) *warn += "material file " + path + " not found\n";
+            return false;
+        }
+        auto text = text::readFile(path);
+        if (!text) {
+            if (!problem_) problem_ = text.error();
+            return false;
+        }
+        std::istringstream stream(std::move(*text));
+        tinyobj::LoadMtl(names, materials, &stream, warn, err);
+        return true;
+    }
+
+    // The first material file that could not be read within the limits.
+    const Status& problem() const { return problem_; }
+
+  private:
+    std::filesystem::path folder_;
+    Status problem_;
 };
 
 // Checks the numbers of a `v` or `vt` line (tokens after the keyword).
@@ -81,6 +120,7 @@ std::optional<std::string> checkCorner(std::string_view corner) {
 // The checks tinyobjloader does not make, with line numbers.
 Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
     ObjLines result;
+    std::uint64_t positions = 0, texcoords = 0, corners = 0, triangles = 0;
     text::LineReader lines(text::skipBom(text));
     std::vector<std::string_view> tokens;
     std::string_view line;
@@ -103,21 +143,26 @@ Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
                                            : std::string("a texture coordinate needs u [v]"));
             }
             if (auto message = checkNumbers(tokens)) return fail(*message);
+            ++(keyword == "v" ? positions : texcoords);
         } else if (keyword == "f") {
-            const std::size_t corners = tokens.size() - 1;
-            if (corners < 3) {
-                return fail("a face needs at least 3 vertices, got " + std::to_string(corners));
-            }
-            if (corners > maxFaceCorners) {
-                return fail("a face has " + std::to_string(corners) + " vertices; at most " +
+            const std::size_t n = tokens.size() - 1;
+            if (n < 3) return fail("a face needs at least 3 vertices, got " + std::to_string(n));
+            // Checked before the corners, so a face of thousands costs one pass over its line.
+            if (n > maxFaceCorners) {
+                return fail("a face has " + std::to_string(n) + " vertices; at most " +
                             std::to_string(maxFaceCorners) + " are supported");
             }
             for (std::size_t i = 1; i < tokens.size(); ++i) {
                 if (auto message = checkCorner(tokens[i])) return fail(*message);
             }
             result.faceLines.push_back(number);
+            corners += n;
+            triangles += n - 2;
         }
     }
+    // One engine vertex per distinct (position, texcoord) pair a corner uses.
+    const std::uint64_t vertices = std::min(corners, positions * (texcoords + 1));
+    if (auto problem = meshMemoryProblem(vertices, triangles)) return Error{{path, 0}, *problem};
     return result;
 }
 
@@ -138,9 +183,9 @@ std::string firstLine(const std::string& message) {
 }
 
 // The map_Kd of the first material a face uses, else of any material, else empty.
-std::string diffuseTexture(const tinyobj::ObjReader& reader) {
-    const auto& materials = reader.GetMaterials();
-    for (const auto& shape : reader.GetShapes()) {
+std::string diffuseTexture(const std::vector<tinyobj::shape_t>& shapes,
+                           const std::vector<tinyobj::material_t>& materials) {
+    for (const auto& shape : shapes) {
         for (const int id : shape.mesh.material_ids) {
             if (id >= 0 && static_cast<std::size_t>(id) < materials.size() &&
                 !materials[static_cast<std::size_t>(id)].diffuse_texname.empty()) {
@@ -162,26 +207,32 @@ Result<Mesh> loadObj(const std::string& path) {
     auto lines = checkObjText(*text, path);
     if (!lines) return lines.error();
     const std::vector<int>& faceLines = lines->faceLines;
-    text->clear();
-    text->shrink_to_fit();
 
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = false;   // fanned below, after the indices are known to be valid
-    config.vertex_color = false;  // so that attrib.colors stays empty when the file has none
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path, config)) {
-        const std::string& message = reader.Error();
-        return Error{{path, lineInMessage(message)}, "cannot parse OBJ: " + firstLine(message)};
+    // The text just checked, not the file again: it may have changed on disk since.
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warn, err;
+    MtlReader mtl(std::filesystem::path(path).parent_path());
+    {
+        std::istringstream stream(std::move(*text));
+        // triangulate off: fanned below, after the indices are known to be valid; vertex colours
+        // without a fallback, so that attrib.colors stays empty when the file has none.
+        const bool parsed = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &stream,
+                                             &mtl, /*triangulate=*/false,
+                                             /*default_vcols_fallback=*/false);
+        if (mtl.problem()) return *mtl.problem();
+        if (!parsed) {
+            return Error{{path, lineInMessage(err)}, "cannot parse OBJ: " + firstLine(err)};
+        }
     }
-
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const auto positionCount = static_cast<std::int64_t>(attrib.vertices.size() / 3);
     const auto texcoordCount = static_cast<std::int64_t>(attrib.texcoords.size() / 2);
     const bool hasColors = !attrib.colors.empty() && attrib.colors.size() == attrib.vertices.size();
 
     std::size_t faceCount = 0;
     std::size_t cornerCount = 0;
-    for (const auto& shape : reader.GetShapes()) {
+    for (const auto& shape : shapes) {
         faceCount += shape.mesh.num_face_vertices.size();
         cornerCount += shape.mesh.indices.size();
     }
@@ -200,7 +251,7 @@ Result<Mesh> loadObj(const std::string& path) {
     merged.reserve(cornerCount);
     std::vector<std::uint32_t> corners;
     std::size_t face = 0;
-    for (const auto& shape : reader.GetShapes()) {
+    for (const auto& shape : shapes) {
         std::size_t offset = 0;
         for (const unsigned char n : shape.mesh.num_face_vertices) {
             const int line = linesKnown ? faceLines[face] : 0;
@@ -258,7 +309,7 @@ Result<Mesh> loadObj(const std::string& path) {
     }
     if (!anyUv) mesh.uvs.clear();
 
-    const std::string texture = diffuseTexture(reader);
+    const std::string texture = diffuseTexture(shapes, materials);
     if (!texture.empty()) {
         std::string named = texture;
         std::replace(named.begin(), named.end(), '\\', '/');  // written on Windows

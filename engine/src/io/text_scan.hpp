@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "facet/limits.hpp"
 
 namespace facet::text {
 
@@ -143,17 +144,26 @@ inline std::string countNoun(std::size_t n, std::string_view noun) {
     return std::to_string(n) + " " + std::string(noun) + (n == 1 ? "" : "s");
 }
 
-/// Reads a whole file; the error names the file (line 0).
+/// Reads a whole regular file of at most kMaxFileBytes; the error names the file (line 0).
 inline Result<std::string> readFile(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         return Error{{path, 0}, "is a folder, not a file"};
+    }
+    // A device or pipe has no size to check and may never end.
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+        return Error{{path, 0}, "is not a regular file"};
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error{{path, 0}, "cannot open file"};
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
     if (size < 0) return Error{{path, 0}, "cannot read file"};
+    if (static_cast<std::uint64_t>(size) > kMaxFileBytes) {
+        return Error{{path, 0},
+                     "the file is " + std::to_string(size) + " bytes; the limit is " +
+                         std::to_string(kMaxFileBytes)};
+    }
     in.seekg(0, std::ios::beg);
     std::string text(static_cast<std::size_t>(size), '\0');
     if (size > 0 && !in.read(text.data(), static_cast<std::streamsize>(size))) {

@@ -128,8 +128,9 @@ template <class V>
 
 /// The triangle loop of an affine or perspective variant V without derivatives.
 template <class V>
-[[gnu::noinline, gnu::target_clones("avx2", "default")]] std::size_t rasterizeSpans(
-    void* context, const CoverageSetup& setup, const Planes& p) {
+[[gnu::noinline, FACET_SPAN_CLONES]] std::size_t rasterizeSpans(void* context,
+                                                                const CoverageSetup& setup,
+                                                                const Planes& p) {
     static_assert(V::kInterp != Interp::Subdivided && !V::kDerivatives);
     const RasterContext& ctx = *static_cast<const RasterContext*>(context);
     Framebuffer& fb = *ctx.fb;

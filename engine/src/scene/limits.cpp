@@ -1,0 +1,48 @@
+#include "facet/limits.hpp"
+
+#include <algorithm>
+
+namespace facet {
+namespace {
+
+// "4.0 GiB": one decimal is enough to see how far over a limit a request is.
+std::string gib(std::uint64_t bytes) {
+    const std::uint64_t tenths = (bytes * 10 + (std::uint64_t{1} << 29)) >> 30;
+    return std::to_string(tenths / 10) + "." + std::to_string(tenths % 10) + " GiB";
+}
+
+}  // namespace
+
+std::uint64_t frameBytes(int width, int height, int supersample) {
+    // Colour (4 bytes) and depth (4 bytes) per pixel; a supersampled frame is drawn at n x n
+    // the size and then resolved into a frame of the asked size.
+    const auto pixels = static_cast<std::uint64_t>(std::max(width, 0)) *
+                        static_cast<std::uint64_t>(std::max(height, 0));
+    const auto n = static_cast<std::uint64_t>(std::max(supersample, 1));
+    return 8 * pixels * (n > 1 ? n * n + 1 : 1);
+}
+
+std::optional<std::string> frameMemoryProblem(int width, int height, int supersample) {
+    const std::uint64_t bytes = frameBytes(width, height, supersample);
+    if (bytes <= kMaxFrameBytes) return std::nullopt;
+    const int n = std::max(supersample, 1);
+    return "a " + std::to_string(width) + "x" + std::to_string(height) + " frame" +
+           (n > 1 ? " at " + std::to_string(n) + "x" + std::to_string(n) + " supersampling" : "") +
+           " needs " + gib(bytes) + " of frame buffers; the limit is " + gib(kMaxFrameBytes) +
+           " (choose a smaller size or supersampling)";
+}
+
+std::optional<std::string> meshMemoryProblem(std::uint64_t vertices, std::uint64_t triangles) {
+    // Counts come from file headers: divide instead of multiplying so nothing overflows.
+    if (vertices <= kMaxMeshBytes / kBytesPerVertex &&
+        triangles <= kMaxMeshBytes / kBytesPerTriangle &&
+        vertices * kBytesPerVertex + triangles * kBytesPerTriangle <= kMaxMeshBytes) {
+        return std::nullopt;
+    }
+    return std::to_string(vertices) + " vertices and " + std::to_string(triangles) +
+           " triangles would need more than the " + gib(kMaxMeshBytes) + " a mesh may take (" +
+           std::to_string(kBytesPerVertex) + " bytes per vertex, " +
+           std::to_string(kBytesPerTriangle) + " per triangle)";
+}
+
+}  // namespace facet

@@ -1,0 +1,217 @@
+// The texture decoders against hostile and ordinary files: PNG (libpng) decodes exactly as
+// stb_image did before, JPEG (libjpeg-turbo) within the measured IDCT/colour-conversion difference;
+// the fuzz findings stay fixed; a progressive JPEG of endless scans is stopped.
+//
+// Data (tests/data): tex_png_*.png and tex_jpeg_*.jpg are small images made with ImageMagick
+// (palette, tRNS, 16-bit, Adam7, grey+alpha; 4:2:0, 4:2:2 at odd sizes, progressive, grey,
+// CMYK); tex_huffman_overflow.jpg is tex_jpeg_420 with a DHT whose 16 counts are 17 each (272
+// codes, more than the 256 a table holds: stb_image 2.27 writes past its size[257]).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "facet/limits.hpp"
+#include "facet/texture.hpp"
+#include "io/image_decode.hpp"
+
+// stb_image's PNG and JPEG decoders, here only as the reference the engine used to ship.
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_NO_STDIO
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wnull-dereference"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#endif
+#include <stb/stb_image.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace fs = std::filesystem;
+using namespace facet;
+
+namespace {
+
+std::string data(const std::string& name) {
+    return std::string(FACET_TEST_DATA) + "/" + name;
+}
+std::string shared(const std::string& name) {
+    return std::string(FACET_SHARED_DIR) + "/data/" + name;
+}
+
+std::vector<unsigned char> readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// How far the engine's level 0 is from stb_image's RGBA decode of the same file.
+struct Difference {
+    bool sameSize = false;
+    int maxChannel = 0;            // largest channel difference, in 8-bit steps
+    double differingPixels = 0.0;  // share of pixels with any channel different
+};
+
+Difference againstStb(const std::string& path) {
+    const Result<Texture> texture = loadTexture(path);
+    EXPECT_TRUE(texture.ok()) << texture.error().what();
+    if (!texture) return {};
+    const std::vector<unsigned char> bytes = readBytes(path);
+    int w = 0, h = 0, n = 0;
+    stbi_uc* ref =
+        stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &n, 4);
+    EXPECT_NE(ref, nullptr) << path << ": " << stbi_failure_reason();
+    if (!ref) return {};
+    Difference d;
+    const MipLevel& level = texture->level(0);
+    d.sameSize = level.width == w && level.height == h;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; d.sameSize && i < level.texels.size(); ++i) {
+        int pixelMax = 0;
+        for (int k = 0; k < 4; ++k) {
+            const int mine = static_cast<int>((level.texels[i] >> (8 * k)) & 0xFFu);
+            pixelMax =
+                std::max(pixelMax, std::abs(mine - ref[4 * i + static_cast<std::size_t>(k)]));
+        }
+        d.maxChannel = std::max(d.maxChannel, pixelMax);
+        differing += pixelMax > 0;
+    }
+    stbi_image_free(ref);
+    d.differingPixels = static_cast<double>(differing) / static_cast<double>(w * h);
+    return d;
+}
+
+}  // namespace
+
+// libpng with the transforms of png_decode.cpp gives stb_image's pixels exactly, for every PNG
+// flavour, so PNG-textured images are byte-identical to before.
+TEST(ImageDecode, PngMatchesStbExactly) {
+    for (const char* name : {"tex_4x4.png", "tex_gray_3x2.png", "texture_checker.png",
+                             "tex_png_16bit.png", "tex_png_interlaced.png", "tex_png_palette.png",
+                             "tex_png_trns.png", "tex_png_gray_alpha.png"}) {
+        const Difference d = againstStb(data(name));
+        EXPECT_TRUE(d.sameSize) << name;
+        EXPECT_EQ(d.maxChannel, 0) << name;
+    }
+    if (!fs::is_directory(shared("models"))) GTEST_SKIP() << "shared data not found";
+    const Difference spot = againstStb(shared("models/spot_texture.png"));
+    EXPECT_TRUE(spot.sameSize);
+    EXPECT_EQ(spot.maxChannel, 0);
+}
+
+// libjpeg-turbo (JDCT_ISLOW, fancy upsampling: the closest of its settings) rounds its IDCT and
+// YCbCr conversion differently from stb_image: measured on the course's images, brick.jpg has
+// 10.4% of pixels off by at most 3 steps, world_map.jpg 2.5% by at most 2 (README, "Textures").
+TEST(ImageDecode, JpegWithinMeasuredDifferenceOfStb) {
+    for (const char* name : {"tex_jpeg_progressive.jpg", "tex_jpeg_gray.jpg",
+                             "tex_jpeg_422_odd.jpg", "tex_jpeg_cmyk.jpg"}) {
+        const Difference d = againstStb(data(name));
+        EXPECT_TRUE(d.sameSize) << name;
+        EXPECT_LE(d.maxChannel, 3) << name;
+    }
+    if (!fs::is_directory(shared("course"))) GTEST_SKIP() << "shared data not found";
+    const Difference brick = againstStb(shared("course/brick.jpg"));
+    EXPECT_TRUE(brick.sameSize);
+    EXPECT_LE(brick.maxChannel, 3);
+    EXPECT_LT(brick.differingPixels, 0.11);
+    const Difference world = againstStb(shared("course/world_map.jpg"));
+    EXPECT_TRUE(world.sameSize);
+    EXPECT_LE(world.maxChannel, 2);
+    EXPECT_LT(world.differingPixels, 0.03);
+}
+
+// Fuzz finding (stb_image 2.27): Huffman counts adding up to more than 256. libjpeg-turbo
+// refuses the table; the error names the file and says the image is damaged.
+TEST(ImageDecode, HuffmanTableOverflowIsAnError) {
+    const Result<Texture> t = loadTexture(data("tex_huffman_overflow.jpg"));
+    ASSERT_FALSE(t.ok());
+    EXPECT_EQ(t.error().loc.file, data("tex_huffman_overflow.jpg"));
+    EXPECT_NE(t.error().message.find("JPEG"), std::string::npos) << t.error().what();
+    EXPECT_NE(t.error().message.find("libjpeg"), std::string::npos) << t.error().what();
+}
+
+// A progressive JPEG whose last scan is repeated 600 times: each repeat is a pass over the
+// image, so the decoder stops after kMaxJpegScans instead of working on.
+TEST(ImageDecode, EndlessProgressiveScansAreStopped) {
+    const std::vector<unsigned char> bytes = readBytes(data("tex_jpeg_progressive.jpg"));
+    ASSERT_GT(bytes.size(), 4u);
+    std::size_t lastScan = 0;
+    for (std::size_t i = 0; i + 1 < bytes.size(); ++i) {
+        if (bytes[i] == 0xFF && bytes[i + 1] == 0xDA) lastScan = i;
+    }
+    ASSERT_GT(lastScan, 0u);
+    ASSERT_EQ(bytes[bytes.size() - 2], 0xFF);
+    ASSERT_EQ(bytes.back(), 0xD9);
+    std::vector<unsigned char> hostile(bytes.begin(), bytes.end() - 2);
+    const std::vector<unsigned char> scan(bytes.begin() + static_cast<std::ptrdiff_t>(lastScan),
+                                          bytes.end() - 2);
+    for (int i = 0; i < 600; ++i) hostile.insert(hostile.end(), scan.begin(), scan.end());
+    hostile.insert(hostile.end(), {0xFF, 0xD9});
+
+    const Result<Texture> t = detail::decodeTexture(hostile, "many_scans.jpg");
+    ASSERT_FALSE(t.ok());
+    EXPECT_NE(t.error().message.find("more than " + std::to_string(kMaxJpegScans)),
+              std::string::npos)
+        << t.error().what();
+    // The untouched file still decodes.
+    EXPECT_TRUE(detail::decodeTexture(bytes, "progressive.jpg").ok());
+}
+
+// The size limit is checked from the header for every format, before pixels are allocated.
+TEST(ImageDecode, SidesOverTheLimitAreRefusedFromTheHeader) {
+    const detail::DecodeLimits small{.maxSide = 4};
+    for (const char* name : {"tex_jpeg_progressive.jpg", "tex_png_16bit.png", "tex_5x3.bmp"}) {
+        const Result<Texture> t = detail::decodeTexture(readBytes(data(name)), name, small);
+        ASSERT_FALSE(t.ok()) << name;
+        EXPECT_NE(t.error().message.find("a texture side must be 1 to 4"), std::string::npos)
+            << t.error().what();
+    }
+}
+
+// Damage after the header: the message says so and names the decoder.
+TEST(ImageDecode, DamagedDataGivesClearErrors) {
+    std::vector<unsigned char> png = readBytes(data("tex_png_16bit.png"));
+    ASSERT_GT(png.size(), 149u);
+    png.resize(149);  // IDAT starts at byte 111 and holds 66 bytes
+    const Result<Texture> cut = detail::decodeTexture(png, "cut.png");
+    ASSERT_FALSE(cut.ok());
+    EXPECT_NE(cut.error().message.find("damaged or truncated (libpng:"), std::string::npos)
+        << cut.error().what();
+
+    std::vector<unsigned char> jpeg = readBytes(data("tex_jpeg_gray.jpg"));
+    jpeg.resize(40);  // inside the header's tables
+    const Result<Texture> header = detail::decodeTexture(jpeg, "header.jpg");
+    ASSERT_FALSE(header.ok());
+    EXPECT_NE(header.error().message.find("JPEG image: its header is damaged"), std::string::npos)
+        << header.error().what();
+}
+
+// Fuzz finding (a timeout): a 134-byte run-length TGA claiming 3855x3855 pixels; stb_image reads
+// zeros past the end and filled all 15 million. Refused from the header: no BMP or TGA packs
+// more than 64 pixels into a byte.
+TEST(ImageDecode, TgaClaimingMorePixelsThanItsBytesIsRefused) {
+    const Result<Texture> t = loadTexture(data("tex_tga_empty_claim.tga"));
+    ASSERT_FALSE(t.ok());
+    EXPECT_NE(t.error().message.find("image claims 3855x3855 pixels, more than a 134-byte BMP or "
+                                     "TGA file can hold"),
+              std::string::npos)
+        << t.error().what();
+    // A real run-length TGA (8x8 in 50 bytes) still loads.
+    const Result<Texture> rle = loadTexture(data("tex_tga_rle.tga"));
+    ASSERT_TRUE(rle.ok()) << rle.error().what();
+    EXPECT_EQ(rle->width(), 8);
+}
