@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "facet/scene_io.hpp"
 #include "file_list.hpp"
 #include "panels.hpp"
 #include "resources.hpp"
