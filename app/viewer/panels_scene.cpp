@@ -103,8 +103,8 @@ void sceneFileEvents(App& app) {
                       done->error().what() + "\n\nThe previous scene stays.");
     }
     openDropped(app);
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S, false)) saveShownScene(app);
+    if (app.keys.saveScene) saveShownScene(app);
+    app.keys.saveScene = false;
     if (app.loading.running()) loadingWindow(app);
 }
 

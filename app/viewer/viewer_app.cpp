@@ -36,9 +36,14 @@ void onGlfwError(int, const char* description) {
     gGlfwError = description ? description : "unknown GLFW error";
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    // Ctrl+S saves even from a text field (the save path's own, typically).
+    if (app && key == GLFW_KEY_S && (mods & GLFW_MOD_CONTROL)) {
+        app->keys.saveScene = true;
+        return;
+    }
     // A text field being edited owns the keyboard (P is a letter, Esc leaves the field).
     if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
     switch (key) {

@@ -64,6 +64,7 @@ struct KeyEvents {
     bool resetCamera = false;
     bool togglePanels = false;
     bool cycleRenderer = false;  ///< G: CPU engine → OpenGL twin → side by side → CPU engine
+    bool saveScene = false;      ///< Ctrl+S: save the scene shown
 };
 
 /// The whole viewer.
