@@ -47,7 +47,7 @@ int runGlRender(const RenderOptions& o) {
     if (Status st = writePng(frame, o.output)) return failed(st->what());
     std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s) with %s\n", o.output.c_str(),
                 frame.width, frame.height, o.mode.c_str(), o.shader.c_str(), o.interp.c_str(),
-                o.lighting.c_str(), context->description().c_str());
+                std::string(toString(settings.lighting)).c_str(), context->description().c_str());
     printFrameTimes(ms);
     if (o.stats) {
         std::printf(
@@ -67,7 +67,8 @@ int runGlRender(const RenderOptions& o) {
 void addGlRenderCommand(CLI::App& app, int& exitCode) {
     auto opts = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "render-gl", "Render a .scene file with the OpenGL twin (headless EGL) to a PNG image");
+        "render-gl",
+        "Render a .scene file or a mesh with the OpenGL twin (headless EGL) to a PNG image");
     addRenderOptions(*cmd, *opts,
                      "affine or perspective (subdivided[:N] is drawn perspective-correct)");
     cmd->callback([opts, &exitCode] { exitCode = runGlRender(*opts); });

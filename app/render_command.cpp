@@ -39,7 +39,7 @@ int runRender(const RenderOptions& o) {
     }
     std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s%s%s)\n", o.output.c_str(), frame.width,
                 frame.height, o.mode.c_str(), o.shader.c_str(), o.interp.c_str(),
-                o.lighting.c_str(),
+                std::string(toString(settings.lighting)).c_str(),
                 settings.shader == ShaderKind::Texture
                     ? (std::string(", ") + o.filter + (o.combine ? ", combined" : "")).c_str()
                     : "",
@@ -76,7 +76,8 @@ int runRender(const RenderOptions& o) {
 
 void addRenderCommand(CLI::App& app, int& exitCode) {
     auto opts = std::make_shared<RenderOptions>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a .scene file to a PNG image");
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render a .scene file or a bare .off/.obj mesh to a PNG image");
     addRenderOptions(*cmd, *opts,
                      "Attribute interpolation: affine, perspective, subdivided[:N] (exact every N "
                      "pixels, affine between; N = 16 by default)");

@@ -43,7 +43,10 @@ std::vector<std::string> choices(const std::vector<std::string_view>& names) {
 }  // namespace
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interpHelp) {
-    cmd.add_option("scene", o.scene, "The .scene file")->required();
+    cmd.add_option("scene", o.scene,
+                   "The .scene file, or a bare .off/.obj mesh (framed from a three-quarter view, "
+                   "lit by a light near the camera)")
+        ->required();
     cmd.add_option("-o,--output", o.output, "Output PNG path")->required();
     cmd.add_option("--mode", o.mode, "Draw mode")
         ->check(CLI::IsMember(choices(drawModeNames())))
@@ -53,9 +56,9 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
         ->capture_default_str();
     cmd.add_option("--interp", o.interp, interpHelp)->capture_default_str();
     cmd.add_option("--lighting", o.lighting,
-                   "Lighting: off, gouraud (per vertex) or phong (per pixel)")
-        ->check(CLI::IsMember(choices(lightingNames())))
-        ->capture_default_str();
+                   "Lighting: off, gouraud (per vertex) or phong (per pixel); default off for a "
+                   ".scene, gouraud for a bare mesh")
+        ->check(CLI::IsMember(choices(lightingNames())));
     cmd.add_option("--texture", o.texture,
                    "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's");
     cmd.add_option("--filter", o.filter, "Texture filter")
@@ -71,7 +74,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "bounding-box diagonal / 100)")
         ->check(CLI::PositiveNumber);
     cmd.add_flag("--cull", o.cull, "Drop back-facing triangles");
-    cmd.add_option("--size", o.size, "Image size WxH (focal length scales with the width)");
+    cmd.add_option("--size", o.size,
+                   "Image size WxH (a .scene: the focal length scales with the width; a bare "
+                   "mesh: framed for this size, 1280x720 by default)");
+    cmd.add_option("--write-scene", o.writeScene,
+                   "Also save the scene (mesh, camera, size, light, material, texture) as a "
+                   ".scene file that renders the same image with the same options");
     cmd.add_option("--background", o.background, "Background colour, hex RRGGBB")
         ->capture_default_str();
     cmd.add_option("--near", o.nearPlane, "Near plane distance (default: 1/1000 of the mesh size)")
@@ -114,7 +122,6 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
                    std::to_string(kMaxSubdivision) + "), got '" + o.interp + "'");
     settings.interp = interp->interp;
     settings.subdivision = interp->subdivision;
-    settings.lighting = *parseLighting(o.lighting);
     settings.filter = *parseFilter(o.filter);
     settings.combine = o.combine;
     settings.showNormals = o.normals || o.normalLength > 0.0;
@@ -129,9 +136,19 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 
-    Result<Scene> loaded = loadScene(o.scene);
+    int w = 0, h = 0;
+    if (!o.size.empty() && !parseSize(o.size, w, h))
+        return bad("--size wants WxH with 1.." + std::to_string(kMaxImageSide) + " each, got '" +
+                   o.size + "'");
+    const bool bareMesh = fileKind(o.scene) == FileKind::mesh;
+    Result<Scene> loaded =
+        openSceneFile(o.scene, w > 0 ? w : kBareMeshWidth, w > 0 ? h : kBareMeshHeight);
     if (!loaded) return bad(loaded.error().what());
     scene = std::move(loaded).value();
+    // A bare mesh is lit by default: its scene was made for it (conventions §3b). A .scene keeps
+    // the course's default, unlit.
+    settings.lighting = o.lighting.empty() ? (bareMesh ? Lighting::Gouraud : Lighting::Off)
+                                           : *parseLighting(o.lighting);
     if (!o.texture.empty()) {
         if (Status st = loadSceneTexture(scene, o.texture)) return bad(st->what());
     }
@@ -144,17 +161,18 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
                      "%s: warning: %s has no texture coordinates; every pixel samples "
                      "uv = (0, 0)\n",
                      command, scene.meshPath.c_str());
-    if (!o.size.empty()) {
-        int w = 0, h = 0;
-        if (!parseSize(o.size, w, h))
-            return bad("--size wants WxH with 1.." + std::to_string(kMaxImageSide) +
-                       " each, got '" + o.size + "'");
+    if (!bareMesh && w > 0)
         scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
-    }
     // Refused before the renderer allocates anything (limits.hpp).
     if (auto problem =
             frameMemoryProblem(scene.camera.width, scene.camera.height, settings.supersample))
         return bad(*problem);
+    if (!o.writeScene.empty()) {
+        if (Status st = writeScene(scene, o.writeScene)) {
+            std::fprintf(stderr, "%s: %s\n", command, st->what().c_str());
+            return kFailed;
+        }
+    }
     return kOk;
 }
 

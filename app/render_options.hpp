@@ -20,10 +20,11 @@ struct RenderOptions {
     std::string mode = "solid";
     std::string shader = "painter";
     std::string interp = "perspective";
-    std::string lighting = "off";
+    std::string lighting;  ///< empty: off for a .scene, gouraud for a bare mesh
     std::string filter = "bilinear";
     std::string texture;
     std::string size;
+    std::string writeScene;  ///< --write-scene: save the scene (after --size, --texture) here
     std::string background = "5C5C5C";
     bool cull = false;
     bool combine = false;
@@ -42,8 +43,9 @@ struct RenderOptions {
 /// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.
 void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& interpHelp);
 
-/// Loads the scene (and --texture), applies --size and fills `settings`. On bad input prints one
-/// line prefixed with `command` on stderr and returns kBadInput; kOk otherwise.
+/// Loads the scene or bare mesh (and --texture), applies --size, fills `settings` and writes
+/// --write-scene. On bad input prints one line prefixed with `command` on stderr and returns
+/// kBadInput (kFailed when the scene cannot be written); kOk otherwise.
 int prepareRender(const RenderOptions& options, const char* command, Scene& scene,
                   RenderSettings& settings);
 

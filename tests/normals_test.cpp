@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -223,3 +225,125 @@ TEST(Normals, DisplayLengthIsDiagonalOverHundred) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Normals per position and from the file (conventions §3, §6; issue 14, point 5).
+
+namespace seams {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+    const std::filesystem::path p = std::filesystem::temp_directory_path() / name;
+    FILE* f = std::fopen(p.string().c_str(), "wb");
+    std::fwrite(text.data(), 1, text.size(), f);
+    std::fclose(f);
+    return p.string();
+}
+
+// A unit cube of 8 positions; with `uvs` every face has its own four texture coordinates, so
+// the loader splits each corner into three vertices.
+std::string cubeObj(bool uvs) {
+    std::string s = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+    if (uvs)
+        for (int face = 0; face < 6; ++face) s += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+    const int faces[6][4] = {{1, 4, 3, 2}, {5, 6, 7, 8}, {1, 2, 6, 5},
+                             {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}};
+    for (int face = 0; face < 6; ++face) {
+        const auto& f = faces[face];
+        s += "f";
+        for (int k = 0; k < 4; ++k) {
+            s += ' ';
+            s += std::to_string(f[k]);
+            if (uvs) {
+                s += '/';
+                s += std::to_string(4 * face + k + 1);
+            }
+        }
+        s += "\n";
+    }
+    return s;
+}
+
+}  // namespace seams
+
+TEST(NormalsPerPosition, ACubeWithSeparateFaceUvsSharesOneNormalPerCorner) {
+    const auto split = facet::loadObj(seams::writeTemp("facet_cube_uv.obj", seams::cubeObj(true)));
+    const auto welded =
+        facet::loadObj(seams::writeTemp("facet_cube_plain.obj", seams::cubeObj(false)));
+    ASSERT_TRUE(split && welded);
+    ASSERT_EQ(split->vertexCount(), 24u);  // 8 corners × 3 faces each
+    ASSERT_EQ(welded->vertexCount(), 8u);
+    ASSERT_EQ(split->positionIds.size(), 24u);
+    EXPECT_TRUE(welded->positionIds.empty());  // nothing was split
+
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(*split);
+    const std::vector<glm::vec3> w = facet::computeVertexNormals(*welded);
+    for (std::size_t i = 0; i < n.size(); ++i) {
+        // Each of the three vertices of a corner has the welded cube's normal at that corner
+        // (pointing out along the diagonal's octant), not its own face's.
+        const auto same =
+            std::find(welded->positions.begin(), welded->positions.end(), split->positions[i]);
+        ASSERT_NE(same, welded->positions.end());
+        EXPECT_EQ(n[i], w[static_cast<std::size_t>(same - welded->positions.begin())])
+            << "vertex " << i;
+        EXPECT_LT(split->positionIds[i], 8u);  // the file's position it was split from
+        const glm::vec3 outwards = split->positions[i] - glm::vec3(0.5f);
+        EXPECT_GT(glm::dot(n[i], outwards), 0.0f);
+        EXPECT_LT(std::abs(n[i].x), 0.99f);  // not a face normal
+    }
+}
+
+TEST(NormalsPerPosition, OffVerticesAreEachTheirOwnPosition) {
+    // Two triangles meeting at a fold, the shared corner written twice: OFF has no positions
+    // to share, so the two copies keep their own face's normal (conventions §6).
+    const auto m = facet::parseOff(
+        "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n0 1 0\n0 0 1\n"
+        "3 0 1 2\n3 3 4 5\n",
+        "fold.off");
+    ASSERT_TRUE(m);
+    const std::vector<glm::vec3> n = facet::computeVertexNormals(*m);
+    EXPECT_EQ(n[0], glm::vec3(0, 0, 1));
+    EXPECT_EQ(n[3], glm::vec3(1, 0, 0));
+}
+
+TEST(NormalsFromTheFile, SuzannesVnAreUsed) {
+    const std::string path = std::string(FACET_SHARED_DIR) + "/data/models/suzanne.obj";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found";
+    const auto m = facet::loadObj(path);
+    ASSERT_TRUE(m) << m.error().what();
+    ASSERT_TRUE(m->hasNormals());
+    ASSERT_EQ(m->normals.size(), m->vertexCount());
+    const std::vector<glm::vec3> used = facet::computeVertexNormals(*m);
+    EXPECT_EQ(used, m->normals);
+    // Every file normal is unit length, and they are not what the faces would give: Suzanne's
+    // vn are Blender's smooth normals, which differ from area-weighted sums.
+    Mesh computed = *m;
+    computed.normals.clear();
+    const std::vector<glm::vec3> own = facet::computeVertexNormals(computed);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        EXPECT_NEAR(glm::length(used[i]), 1.0f, 1e-5f);
+        differ += glm::length(used[i] - own[i]) > 1e-3f;
+    }
+    EXPECT_GT(differ, used.size() / 10);
+}
+
+TEST(NormalsFromTheFile, PartialVnAreIgnoredAndBadIndicesNamed) {
+    // One face without vn: the file's normals are not used at all.
+    const auto partial = facet::loadObj(seams::writeTemp(
+        "facet_partial_vn.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\nf 2 4 3\n"));
+    ASSERT_TRUE(partial) << partial.error().what();
+    EXPECT_FALSE(partial->hasNormals());
+    EXPECT_EQ(facet::computeVertexNormals(*partial)[0], glm::vec3(0, 0, 1));
+
+    const auto full = facet::loadObj(seams::writeTemp(
+        "facet_full_vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -2\nf 1//1 2//1 3//1\n"));
+    ASSERT_TRUE(full);
+    EXPECT_EQ(facet::computeVertexNormals(*full)[0], glm::vec3(0, 0, -1));  // normalised
+
+    const auto bad = facet::loadObj(seams::writeTemp(
+        "facet_bad_vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7\n"));
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().what().find(":5: normal index out of range"), std::string::npos)
+        << bad.error().what();
+}

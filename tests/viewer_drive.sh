@@ -16,6 +16,7 @@
 #   renderers  press G four times, a second apart: CPU engine → OpenGL twin → side by side →
 #           CPU engine → OpenGL twin
 #   combo   open the Render panel's renderer combo and click its second entry (OpenGL twin)
+#   save    left drag across the image (orbit), then Ctrl+S (Save scene to the Scene panel's path)
 set -u
 scenario=$1
 out=$2
@@ -54,6 +55,11 @@ drag() {  # button x0 y0 dx dy steps
 
 case "$scenario" in
   none) ;;
+  save)
+    drag 1 800 450 150 -40 6
+    xdotool key --window "$wid" ctrl+s
+    sleep 1
+    ;;
   orbit)
     drag 1 800 450 120 60 6
     xdotool mousemove --window "$wid" 800 450

@@ -102,6 +102,10 @@ class ViewerGui : public ::testing::Test {
     }
     std::string path(const std::string& name) const { return (dir / name).string(); }
 
+    /// The viewer's config folder (recent files, imgui.ini) inside the test's folder, so no run
+    /// reads another's panel layout or writes to the user's own.
+    std::string configEnv() const { return "XDG_CONFIG_HOME=" + (dir / "config").string(); }
+
     /// `facet render` (or another facet command) of the default scene with extra options, as
     /// the reference picture.
     facet::Framebuffer cliRender(const std::string& name, const std::string& options = "",
@@ -114,14 +118,14 @@ class ViewerGui : public ::testing::Test {
 
     /// Runs the viewer under its own Xvfb, in `dir`; `env` goes before it ("NAME=value ...").
     Outcome viewer(const std::string& args, const std::string& env = "") {
-        return run("cd " + dir.string() + " && " + (env.empty() ? "" : "env " + env + " ") +
-                   "timeout 60 " + kXvfb + kViewer + " " + args);
+        return run("cd " + dir.string() + " && env " + configEnv() + " " + env + " timeout 60 " +
+                   kXvfb + kViewer + " " + args);
     }
 
     /// Drives the viewer with xdotool through tests/viewer_drive.sh.
     Outcome drive(const std::string& scenario, const std::string& args = "--size 1280x720") {
-        return run("timeout 90 " + kXvfb + "sh " + kDriver + " " + scenario + " " + dir.string() +
-                   " " + kViewer + " --no-vsync " + args);
+        return run("env " + configEnv() + " timeout 90 " + kXvfb + "sh " + kDriver + " " +
+                   scenario + " " + dir.string() + " " + kViewer + " --no-vsync " + args);
     }
 };
 

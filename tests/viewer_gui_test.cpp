@@ -4,6 +4,8 @@
 // `xvfb-run -a` starting together can pick the same display number.
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -196,3 +198,30 @@ TEST_F(ViewerGui, TheScreenshotKeySavesTheFrame) {
 }
 
 }  // namespace
+
+// Issue 14: a bare model opened, orbited and saved with Ctrl+S; the saved .scene renders the
+// viewer's frame byte for byte, and the viewer's files went to its config folder.
+TEST_F(ViewerGui, CtrlSSavesABareModelAfterOrbitingAsASceneThatRendersTheFrame) {
+    REQUIRE_XDOTOOL();
+    const std::string teapot = std::string(FACET_SHARED_DIR) + "/data/models/teapot.obj";
+    if (!fs::exists(teapot)) GTEST_SKIP() << teapot << " not found";
+    const Outcome r = drive("save", "--size 1280x720 " + teapot);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    ASSERT_TRUE(fs::exists(path("teapot.scene"))) << r.out;
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("moved"), "1");
+    // The viewer opened the bare mesh lit (Gouraud); the scene file holds no settings.
+    const Outcome cli = run(std::string(FACET_CLI) + " render " + path("teapot.scene") + " -o " +
+                            path("cli.png") + " --lighting gouraud");
+    ASSERT_EQ(cli.exitCode, 0) << cli.out;
+    const Framebuffer frame = readPng(path("frame.png"));
+    ASSERT_EQ(frame.width, 1280);
+    EXPECT_EQ(diffImages(frame, readPng(path("cli.png"))).pixelsDiffering, 0u);
+    // Recent files and ImGui's layout in $XDG_CONFIG_HOME/facet, nothing in the working folder.
+    std::ifstream recent(path("config/facet/recent.txt"));
+    std::string first;
+    std::getline(recent, first);
+    EXPECT_EQ(fs::path(first).filename(), "teapot.scene");
+    EXPECT_TRUE(fs::exists(path("config/facet/imgui.ini")));
+    EXPECT_FALSE(fs::exists(path("imgui.ini")));
+}

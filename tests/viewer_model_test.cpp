@@ -3,10 +3,14 @@
 // malformed scene or texture keeps what was loaded, resizing keeps the framing, and the
 // command line, layout, file lists, state file and frame timing behave.
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -21,9 +25,11 @@
 #include "file_list.hpp"
 #include "frame_stats.hpp"
 #include "layout.hpp"
+#include "load_job.hpp"
 #include "options.hpp"
 #include "renderer_choice.hpp"
 #include "resources.hpp"
+#include "scene_defaults.hpp"
 #include "settings_map.hpp"
 #include "state_file.hpp"
 #include "viewer_model.hpp"
@@ -548,6 +554,228 @@ TEST(ViewerResources, FindsTheDefaultScene) {
     ASSERT_FALSE(scene.empty());
     EXPECT_TRUE(fs::exists(scene));
     EXPECT_EQ(findResource("no/such/file.txt", "/nowhere"), "");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Models as users bring them (issue 14): bare meshes, saving, defaults, the browser, drops,
+// recent files across runs, loading on a worker thread.
+
+const std::string kModels = std::string(FACET_SHARED_DIR) + "/data/models";
+const std::string kSpotScene = std::string(FACET_SHARED_DIR) + "/data/scenes/spot_1280x720.scene";
+
+/// A fresh folder per test, removed when the test passed.
+fs::path scratchFolder() {
+    const fs::path dir =
+        fs::temp_directory_path() /
+        ("facet_viewer_models_" +
+         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(ViewerModels, ABareMeshOpensLitAndATexturedSceneWithItsTexture) {
+    if (!fs::exists(kSpotScene)) GTEST_SKIP() << "shared data not found";
+    ViewerModel m;
+    ASSERT_FALSE(m.load(kModels + "/teapot.obj"));
+    EXPECT_TRUE(m.bareMesh);
+    EXPECT_EQ(m.sceneCamera.width, kBareMeshWidth);
+    EXPECT_EQ(m.settings.lighting, Lighting::Gouraud);
+    EXPECT_EQ(m.settings.shader, ShaderKind::Painter);
+
+    ASSERT_FALSE(m.load(kSpotScene));
+    EXPECT_FALSE(m.bareMesh);
+    EXPECT_EQ(m.settings.shader, ShaderKind::Texture);
+    EXPECT_TRUE(m.settings.combine);
+    EXPECT_EQ(m.settings.lighting, Lighting::Gouraud);
+    EXPECT_EQ(noEffectNote(m.scene, m.settings), "");
+
+    ASSERT_FALSE(m.load(kDefaultScene));  // no texture: the course's unlit painter
+    EXPECT_EQ(m.settings.shader, ShaderKind::Painter);
+    EXPECT_EQ(m.settings.lighting, Lighting::Off);
+}
+
+TEST(ViewerModels, LightingUnderTheTextureShaderTurnsCombineOnOrSaysWhy) {
+    if (!fs::exists(kSpotScene)) GTEST_SKIP() << "shared data not found";
+    ViewerModel m;
+    ASSERT_FALSE(m.load(kSpotScene));
+    RenderSettings& s = m.settings;
+    s.combine = false;
+    s.lighting = Lighting::Off;
+    EXPECT_EQ(noEffectNote(m.scene, s), "");
+    s.lighting = Lighting::Phong;
+    EXPECT_NE(noEffectNote(m.scene, s).find("combine"), std::string::npos);
+    lightingChosen(s);
+    EXPECT_TRUE(s.combine);
+    EXPECT_EQ(noEffectNote(m.scene, s), "");
+    // The note is true: without combine the lit and unlit frames are the same picture.
+    s.combine = false;
+    m.prepareFrame(320, 180);
+    const std::vector<std::uint32_t> lit = m.render().color;
+    s.lighting = Lighting::Off;
+    EXPECT_EQ(m.render().color, lit);
+
+    ASSERT_FALSE(m.load(kModels + "/cow.obj"));
+    s.shader = ShaderKind::Texture;
+    EXPECT_NE(noEffectNote(m.scene, s).find("no texture"), std::string::npos);
+}
+
+TEST(ViewerModels, SavedAfterOrbitingTheFrameRendersByteForByte) {
+    const fs::path dir = scratchFolder();
+    for (const std::string& file : {kModels + "/cow.obj", kSpotScene}) {
+        if (!fs::exists(file)) GTEST_SKIP() << file << " not found";
+        ViewerModel m;
+        ASSERT_FALSE(m.load(file));
+        m.rotate(37.0, -12.0);
+        m.zoom(1.5);
+        m.pan(5.0, 3.0);
+        m.prepareFrame(800, 500);  // the window's size, not the scene's
+        const Framebuffer shown = m.render();
+        const std::string saved = (dir / (fs::path(file).stem().string() + ".scene")).string();
+        ASSERT_FALSE(m.saveScene(saved));
+        EXPECT_EQ(m.recent.front(), fs::absolute(saved).lexically_normal().string());
+
+        Result<Scene> back = loadScene(saved);
+        ASSERT_TRUE(back) << back.error().what();
+        EXPECT_EQ(back->camera.width, 800);
+        Renderer renderer;
+        Framebuffer again;
+        renderer.render(*back, m.settings, again);
+        EXPECT_EQ(again.color, shown.color) << file;
+    }
+    fs::remove_all(dir);
+}
+
+TEST(ViewerModels, TheBrowserListsFoldersScenesMeshesAndImages) {
+    const fs::path dir = scratchFolder();
+    fs::create_directories(dir / "sub");
+    fs::create_directories(dir / ".hidden");
+    for (const char* f : {"b.scene", "a.OBJ", "c.off", "t.png", "notes.txt", ".x.obj"})
+        std::ofstream(dir / f) << "x";
+    const std::vector<FolderEntry> list = listFolder(dir.string());
+    std::vector<std::string> names;
+    for (const FolderEntry& e : list) names.push_back(e.name);
+    EXPECT_EQ(names,
+              (std::vector<std::string>{"..", "sub/", "a.OBJ", "b.scene", "c.off", "t.png"}));
+    EXPECT_EQ(list[0].kind, EntryKind::parent);
+    EXPECT_EQ(fs::path(list[0].path), dir.parent_path());
+    EXPECT_EQ(list[1].kind, EntryKind::folder);
+    EXPECT_EQ(list[2].kind, EntryKind::mesh);
+    EXPECT_EQ(list[5].kind, EntryKind::image);
+    // Going up from the parent entry lists the folder above.
+    const std::vector<FolderEntry> up = listFolder(list[0].path);
+    EXPECT_NE(
+        std::find_if(up.begin(), up.end(),
+                     [&](const FolderEntry& e) { return e.name == dir.filename().string() + "/"; }),
+        up.end());
+    std::string error;
+    EXPECT_EQ(listFolder("/no/such/folder", &error).size(), 1u);  // just ".."
+    EXPECT_NE(error.find("/no/such/folder"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(ViewerModels, ADropOpensMeshesAndScenesTexturesImagesAndRefusesTheRest) {
+    const fs::path dir = scratchFolder();
+    std::ofstream(dir / "notes.txt") << "hello\n";
+    std::ofstream(dir / "mesh.dat") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    const DropPlan plan = planDrop({(dir / "notes.txt").string(), kModels + "/spot_texture.png",
+                                    (dir / "mesh.dat").string(), dir.string()});
+    EXPECT_EQ(plan.open, (dir / "mesh.dat").string());
+    EXPECT_EQ(plan.texture, kModels + "/spot_texture.png");
+    EXPECT_EQ(plan.folder, dir.string());
+    ASSERT_EQ(plan.refused.size(), 1u);
+    EXPECT_NE(plan.refused[0].find("notes.txt"), std::string::npos);
+
+    // What the viewer then does with it: the mesh opens, the image textures Spot.
+    ViewerModel m;
+    ASSERT_FALSE(m.load(plan.open));
+    EXPECT_TRUE(m.bareMesh);
+    ASSERT_FALSE(m.load(kModels + "/spot_triangulated.obj"));
+    ASSERT_FALSE(m.loadTexture(plan.texture));
+    EXPECT_TRUE(m.scene.texture);
+    fs::remove_all(dir);
+}
+
+TEST(ViewerModels, RecentFilesAndTheConfigFolderSurviveARestart) {
+    const fs::path dir = scratchFolder();
+    const char* oldXdg = std::getenv("XDG_CONFIG_HOME");
+    const std::string keep = oldXdg ? oldXdg : "";
+    setenv("XDG_CONFIG_HOME", (dir / "cfg").c_str(), 1);
+    EXPECT_EQ(configFolder(), (dir / "cfg" / "facet").string());
+    unsetenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    if (home) EXPECT_EQ(configFolder(), (fs::path(home) / ".config" / "facet").string());
+    if (oldXdg) setenv("XDG_CONFIG_HOME", keep.c_str(), 1);
+
+    const std::string file = (dir / "cfg" / "facet" / "recent.txt").string();
+    {
+        ViewerModel m;
+        m.recentFile = file;
+        ASSERT_FALSE(m.load(kDefaultScene));
+        ASSERT_FALSE(m.load(kModels + "/cow.obj"));
+    }
+    ViewerModel next;  // a new run
+    next.recent = readRecent(file, kMaxRecent);
+    ASSERT_EQ(next.recent.size(), 2u);
+    EXPECT_EQ(fs::path(next.recent[0]).filename(), "cow.obj");
+    EXPECT_EQ(fs::path(next.recent[1]).filename(), "default.scene");
+    EXPECT_TRUE(readRecent((dir / "none.txt").string(), kMaxRecent).empty());
+    fs::remove_all(dir);
+}
+
+TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
+    const std::string nefertiti = kModels + "/nefertiti.obj";
+    if (!fs::exists(nefertiti)) GTEST_SKIP() << nefertiti << " not found";
+    ViewerModel m;
+    ASSERT_FALSE(m.load(kDefaultScene));
+    const std::size_t before = m.scene.mesh->triangleCount();
+
+    LoadJob job;
+    job.start(nefertiti, 640, 360);
+    EXPECT_TRUE(job.running());
+    // start() returns before the 100k-triangle file is read: the caller's frames go on.
+    EXPECT_FALSE(job.take().has_value());
+    job.cancel();
+    EXPECT_FALSE(job.running());
+    EXPECT_FALSE(job.take().has_value());
+    EXPECT_EQ(m.scene.mesh->triangleCount(), before);
+
+    job.start(nefertiti, 640, 360);
+    std::optional<Result<LoadedScene>> done;
+    for (int i = 0; i < 6000 && !done; ++i) {
+        done = job.take();
+        if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_TRUE(done.has_value());
+    ASSERT_TRUE(*done) << done->error().what();
+    EXPECT_TRUE((*done)->bareMesh);
+    EXPECT_EQ((*done)->scene.camera.width, 640);
+    m.adopt(std::move(*done).value());
+    EXPECT_GT(m.scene.mesh->triangleCount(), 99000u);
+
+    job.start("/no/such/file.obj", 640, 360);
+    for (int i = 0; i < 500 && !done; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    done.reset();
+    for (int i = 0; i < 6000 && !done; ++i) {
+        done = job.take();
+        if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_TRUE(done.has_value());
+    EXPECT_FALSE(*done);
+    EXPECT_NE(done->error().what().find("/no/such/file.obj"), std::string::npos);
+    EXPECT_GT(m.scene.mesh->triangleCount(), 99000u);  // a failure changes nothing
+}
+
+TEST(ViewerModels, TheDefaultSavePathIsAFreeNameInTheCurrentFolder) {
+    EXPECT_EQ(defaultSavePath("/somewhere/read-only/teapot.obj"), "teapot.scene");
+    const fs::path dir = scratchFolder();
+    const fs::path old = fs::current_path();
+    fs::current_path(dir);
+    std::ofstream("teapot.scene") << "x";
+    EXPECT_EQ(defaultSavePath("/x/teapot.obj"), "teapot-0001.scene");
+    fs::current_path(old);
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -41,7 +41,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         "facet-view: the facet rasterizer in a window. Drag with the left button to orbit, the "
         "right or middle one to pan, turn the wheel to zoom; F12 or P saves a screenshot, Esc "
         "quits."};
-    app.add_option("scene", o.scene, "The .scene file to open (default: assets/default.scene)");
+    app.add_option("scene", o.scene,
+                   "The .scene file or bare .off/.obj mesh to open (default: "
+                   "assets/default.scene)");
     app.add_option("--size", size, "Window size WxH (default: the scene's, within the screen)");
     app.add_flag("--keep-scene-size", o.keepSceneSize,
                  "Render at the scene's size, letterboxed, instead of following the window");
@@ -71,14 +73,14 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--mode", o.mode, "Draw mode")
         ->check(CLI::IsMember(choices(drawModeNames())))
         ->capture_default_str();
-    app.add_option("--shader", o.shader, "Shader")
-        ->check(CLI::IsMember(choices(shaderNames())))
-        ->capture_default_str();
+    app.add_option("--shader", o.shader,
+                   "Shader (default: texture for a textured mesh with uv, else painter)")
+        ->check(CLI::IsMember(choices(shaderNames())));
     app.add_option("--interp", o.interp, "Interpolation: affine, perspective, subdivided[:N]")
         ->capture_default_str();
-    app.add_option("--lighting", o.lighting, "Lighting")
-        ->check(CLI::IsMember(choices(lightingNames())))
-        ->capture_default_str();
+    app.add_option("--lighting", o.lighting,
+                   "Lighting (default: gouraud for a textured mesh or a bare mesh, else off)")
+        ->check(CLI::IsMember(choices(lightingNames())));
     app.add_option("--filter", o.filter, "Texture filter")
         ->check(CLI::IsMember(choices(filterNames())))
         ->capture_default_str();
@@ -126,9 +128,10 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
 
 Status applyOptions(const ViewerOptions& o, RenderSettings& settings) {
     const auto mode = parseDrawMode(o.mode);
-    const auto shader = parseShader(o.shader);
+    const auto shader = o.shader.empty() ? std::optional(settings.shader) : parseShader(o.shader);
     const auto interp = parseInterpSpec(o.interp);
-    const auto lighting = parseLighting(o.lighting);
+    const auto lighting =
+        o.lighting.empty() ? std::optional(settings.lighting) : parseLighting(o.lighting);
     const auto filter = parseFilter(o.filter);
     if (!mode || !shader || !interp || !lighting || !filter)
         return Error{{}, "unknown mode, shader, interpolation, lighting or filter name"};
@@ -138,7 +141,7 @@ Status applyOptions(const ViewerOptions& o, RenderSettings& settings) {
     settings.subdivision = interp->subdivision;
     settings.lighting = *lighting;
     settings.filter = *filter;
-    settings.combine = o.combine;
+    settings.combine = settings.combine || o.combine;
     settings.cullBackFaces = o.cull;
     settings.showNormals = o.normals;
     return std::nullopt;

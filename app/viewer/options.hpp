@@ -11,7 +11,7 @@ namespace facet::view {
 
 /// Everything the command line can say; empty strings and zeros mean "not given".
 struct ViewerOptions {
-    std::string scene;             ///< .scene file; empty: the default scene
+    std::string scene;             ///< .scene file or bare mesh; empty: the default scene
     int width = 0;                 ///< --size: window width (0: the scene's, within the screen)
     int height = 0;                ///< --size: window height
     bool keepSceneSize = false;    ///< render at the scene's size, letterboxed
@@ -29,10 +29,11 @@ struct ViewerOptions {
     std::string texture;           ///< image replacing the scene's texture
 
     // Start-up render settings, as `facet render` spells them (already checked when parsed).
+    // Shader and lighting left empty: the scene decides (applySceneDefaults).
     std::string mode = "solid";
-    std::string shader = "painter";
+    std::string shader;
     std::string interp = "perspective";
-    std::string lighting = "off";
+    std::string lighting;
     std::string filter = "bilinear";
     bool combine = false;
     bool cull = false;
@@ -53,8 +54,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv);
 /// Parses "WxH" with 1…kMaxImageSide each.
 bool parseSize(const std::string& text, int& width, int& height);
 
-/// Applies the start-up settings to `settings`; an unknown name gives an error (parseOptions
-/// already rejects them, this guards direct callers).
+/// Applies the start-up settings to `settings` (shader and lighting only when given, combine
+/// only when set); an unknown name gives an error (parseOptions already rejects them, this
+/// guards direct callers).
 Status applyOptions(const ViewerOptions& options, RenderSettings& settings);
 
 }  // namespace facet::view

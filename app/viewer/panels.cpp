@@ -11,6 +11,7 @@ namespace facet::view {
 void drawPanels(App& app) {
     if (planFrame(app.model.rendererChoice, app.compare.enabled).twin || app.compare.enabled)
         compareOverlay(app);
+    sceneFileEvents(app);
     errorPopup(app);
     if (!app.ui.showPanels) return;
 
@@ -43,7 +44,7 @@ void drawPanels(App& app) {
         if (ImGui::CollapsingHeader("Screenshot")) screenshotPanel(app);
         ImGui::PopItemWidth();
         ImGui::TextDisabled(
-            "Esc quit, Tab panels, R reset camera, P screenshot,\n"
+            "Esc quit, Tab panels, R reset camera, P screenshot, Ctrl+S save scene,\n"
             "G next renderer (CPU, OpenGL, side by side)");
     }
     ImGui::End();

@@ -12,6 +12,7 @@
 #include "gl_renderer.hpp"
 #include "panel_widgets.hpp"
 #include "panels.hpp"
+#include "scene_defaults.hpp"
 #include "settings_map.hpp"
 #include "viewer_app.hpp"
 
@@ -65,13 +66,20 @@ void renderPanel(App& app) {
             applyInterp(s, {Interp::Subdivided, n});
     }
     int lighting = nameIndex(lightings, toString(s.lighting));
-    if (comboNames("lighting", lightings, lighting))
+    if (comboNames("lighting", lightings, lighting)) {
         s.lighting =
             parseLighting(lightings[static_cast<std::size_t>(lighting)]).value_or(s.lighting);
+        lightingChosen(s);
+    }
     int filter = nameIndex(filters, toString(s.filter));
     if (comboNames("texture filter", filters, filter))
         s.filter = parseFilter(filters[static_cast<std::size_t>(filter)]).value_or(s.filter);
     ImGui::Checkbox("combine (texel x colour)", &s.combine);
+    if (const std::string note = noEffectNote(app.model.scene, s); !note.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", note.c_str());
+        ImGui::PopStyleColor();
+    }
     ImGui::Checkbox("cull back faces", &s.cullBackFaces);
     ImGui::Checkbox("show normals", &s.showNormals);
     if (s.showNormals) {

@@ -1,14 +1,18 @@
-// Scene and Texture panels: opening files. A file that fails to load opens the error popup and
-// leaves what was loaded before on screen.
+// Scene and Texture panels: opening files (a small browser, recent files, drag and drop),
+// saving the scene shown, and the loading progress. A file that fails to load opens the error
+// popup and leaves what was loaded before on screen.
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "facet/texture.hpp"
 #include "file_list.hpp"
 #include "panels.hpp"
+#include "scene_defaults.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {
@@ -18,39 +22,142 @@ std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
 }
 
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+    App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    if (!app) return;
+    for (int i = 0; i < count; ++i) app->ui.dropped.emplace_back(paths[i]);
+}
+
+void listFolderInto(App& app, const std::string& folder) {
+    app.ui.folderError.clear();
+    app.ui.folder = std::filesystem::path(folder).lexically_normal().string();
+    app.ui.folderFiles = listFolder(app.ui.folder, &app.ui.folderError);
+}
+
+void openDropped(App& app) {
+    if (app.ui.dropped.empty()) return;
+    const DropPlan plan = planDrop(app.ui.dropped);
+    app.ui.dropped.clear();
+    if (!plan.folder.empty()) listFolderInto(app, plan.folder);
+    if (!plan.texture.empty()) {
+        app.ui.texturePath = plan.texture;
+        openTexture(app, plan.texture);
+        // A texture dropped on a mesh with uvs is there to be seen.
+        if (app.model.scene.texture && app.model.scene.mesh->hasUvs())
+            app.model.settings.shader = ShaderKind::Texture;
+    }
+    if (!plan.open.empty()) openScene(app, plan.open);
+    if (!plan.refused.empty()) {
+        std::string message;
+        for (const std::string& r : plan.refused) message += r + "\n";
+        showError(app, "Cannot open the dropped file", message);
+    }
+}
+
+// The loading window: name, time, an animated bar (the loaders report no fraction), Cancel.
+void loadingWindow(App& app) {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(420.0f, 0.0f));
+    if (ImGui::Begin("Opening##load", nullptr,
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize |
+                         ImGuiWindowFlags_NoSavedSettings)) {
+        const double seconds = app.loading.seconds();
+        ImGui::TextWrapped("%s", fileName(app.loading.path()).c_str());
+        char label[32];
+        std::snprintf(label, sizeof label, "%.1f s", seconds);
+        // A sweep that repeats every 2 s: the work is in progress, its share unknown.
+        ImGui::ProgressBar(static_cast<float>(std::fmod(seconds, 2.0) / 2.0), ImVec2(-1.0f, 0.0f),
+                           label);
+        ImGui::TextDisabled("the current scene stays until this one is ready");
+        if (ImGui::Button("Cancel")) app.loading.cancel();
+    }
+    ImGui::End();
+}
+
 }  // namespace
+
+void installFileDrop(App& app) {
+    if (app.window) glfwSetDropCallback(app.window, onDrop);
+}
+
+void saveShownScene(App& app) {
+    if (app.ui.saveScenePath.empty()) return;
+    if (Status error = app.model.saveScene(app.ui.saveScenePath)) {
+        app.ui.lastSave = error->what();
+        showError(app, "Cannot save the scene", error->what());
+        return;
+    }
+    app.ui.lastSave = "saved " + app.ui.saveScenePath;
+    std::printf("facet-view: saved scene %s\n", app.ui.saveScenePath.c_str());
+    std::fflush(stdout);
+}
+
+void sceneFileEvents(App& app) {
+    if (std::optional<Result<LoadedScene>> done = app.loading.take()) {
+        if (*done)
+            adoptScene(app, std::move(*done).value());
+        else
+            showError(app, "Cannot open the file",
+                      done->error().what() + "\n\nThe previous scene stays.");
+    }
+    openDropped(app);
+    if (app.keys.saveScene) saveShownScene(app);
+    app.keys.saveScene = false;
+    if (app.loading.running()) loadingWindow(app);
+}
 
 void scenePanel(App& app) {
     const Scene& scene = app.model.scene;
-    ImGui::TextWrapped("%s", scene.path.c_str());
-    ImGui::TextDisabled("%zu vertices, %zu triangles%s%s", scene.mesh->vertexCount(),
+    ImGui::TextWrapped("%s%s", scene.path.c_str(), app.model.bareMesh ? " (bare mesh)" : "");
+    ImGui::TextDisabled("%zu vertices, %zu triangles%s%s%s", scene.mesh->vertexCount(),
                         scene.mesh->triangleCount(), scene.mesh->hasColors() ? ", colours" : "",
-                        scene.mesh->hasUvs() ? ", uv" : "");
+                        scene.mesh->hasUvs() ? ", uv" : "",
+                        scene.mesh->hasNormals() ? ", normals from the file" : "");
 
     const bool enter =
         ImGui::InputText("##scene", &app.ui.scenePath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if (ImGui::Button("Open") || enter) openScene(app, app.ui.scenePath);
 
+    const bool save =
+        ImGui::InputText("##save", &app.ui.saveScenePath, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if (ImGui::Button("Save scene") || save) saveShownScene(app);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Ctrl+S: write the camera, image size, light and material shown as a .scene file");
+    if (!app.ui.lastSave.empty()) ImGui::TextDisabled("%s", app.ui.lastSave.c_str());
+
+    // The browser: folders (and ".." up), scenes, meshes, images; a click opens or lists.
     const bool list =
         ImGui::InputText("##folder", &app.ui.folder, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    if (ImGui::Button("List folder") || list) {
-        app.ui.folderError.clear();
-        app.ui.folderFiles = listSceneFiles(app.ui.folder, &app.ui.folderError);
-    }
+    if (ImGui::Button("List folder") || list) listFolderInto(app, app.ui.folder);
     if (!app.ui.folderError.empty())
         ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", app.ui.folderError.c_str());
     if (ImGui::BeginListBox("##files",
-                            ImVec2(-1.0f, 5.5f * ImGui::GetTextLineHeightWithSpacing()))) {
-        // Opened after the loop: loading changes the recent list and the scene being listed.
-        std::string chosen;
-        for (const std::string& f : app.ui.folderFiles)
-            if (ImGui::Selectable(fileName(f).c_str(), f == scene.path)) chosen = f;
-        if (app.ui.folderFiles.empty()) ImGui::TextDisabled("no .scene files here");
+                            ImVec2(-1.0f, 7.5f * ImGui::GetTextLineHeightWithSpacing()))) {
+        // Acted on after the loop: opening or listing changes the list being drawn.
+        const FolderEntry* chosen = nullptr;
+        for (const FolderEntry& f : app.ui.folderFiles) {
+            const bool dim = f.kind == EntryKind::image;
+            if (dim) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.7f, 0.8f, 1.0f, 1.0f));
+            if (ImGui::Selectable(f.name.c_str(), f.path == scene.path)) chosen = &f;
+            if (dim) ImGui::PopStyleColor();
+        }
+        if (app.ui.folderFiles.size() <= 1) ImGui::TextDisabled("no scenes, meshes or images");
         ImGui::EndListBox();
-        if (!chosen.empty()) openScene(app, chosen);
+        if (chosen) {
+            const FolderEntry entry = *chosen;
+            if (entry.kind == EntryKind::folder || entry.kind == EntryKind::parent)
+                listFolderInto(app, entry.path);
+            else
+                app.ui.dropped.push_back(entry.path);  // opened as a drop would be
+        }
     }
+    ImGui::TextDisabled("or drop a scene, mesh, image or folder on the window");
     if (app.model.recent.size() > 1 && ImGui::TreeNode("Recent")) {
         std::string chosen;
         for (const std::string& f : app.model.recent)

@@ -13,9 +13,11 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "facet/scene_io.hpp"
 #include "file_list.hpp"
 #include "panels.hpp"
 #include "resources.hpp"
+#include "scene_defaults.hpp"
 #include "screenshot.hpp"
 #include "state_file.hpp"
 
@@ -34,9 +36,14 @@ void onGlfwError(int, const char* description) {
     gGlfwError = description ? description : "unknown GLFW error";
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    // Ctrl+S saves even from a text field (the save path's own, typically).
+    if (app && key == GLFW_KEY_S && (mods & GLFW_MOD_CONTROL)) {
+        app->keys.saveScene = true;
+        return;
+    }
     // A text field being edited owns the keyboard (P is a letter, Esc leaves the field).
     if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
     switch (key) {
@@ -90,12 +97,16 @@ void showError(App& app, const std::string& title, const std::string& message) {
 }
 
 void openScene(App& app, const std::string& path) {
-    if (Status error = app.model.load(path)) {
-        showError(app, "Cannot open the scene", error->what() + "\n\nThe previous scene stays.");
-        return;
-    }
+    app.ui.scenePath = path;
+    app.loading.start(path, kBareMeshWidth, kBareMeshHeight);
+}
+
+void adoptScene(App& app, LoadedScene loaded) {
+    const std::string path = loaded.path;
+    app.model.adopt(std::move(loaded));
     app.ui.scenePath = path;
     app.ui.texturePath = app.model.scene.texturePath;
+    app.ui.saveScenePath = defaultSavePath(path);
     if (app.window) glfwSetWindowTitle(app.window, windowTitle(app.model.scene).c_str());
 }
 
@@ -141,16 +152,22 @@ int App::run() {
     const std::string path = options.scene.empty() ? defaultScenePath() : options.scene;
     Status error;
     if (path.empty()) error = Error{{"assets/default.scene", 0}, "not found; name a .scene file"};
+    model.recentFile = configFolder().empty() ? "" : configFolder() + "/recent.txt";
+    model.recent = readRecent(model.recentFile, kMaxRecent);
     if (!error) error = model.load(path);
+    if (!error && !options.texture.empty()) {
+        error = model.loadTexture(options.texture);
+        applySceneDefaults(model.scene, model.bareMesh, model.settings);
+    }
     if (!error) error = applyOptions(options, model.settings);
-    if (!error && !options.texture.empty()) error = model.loadTexture(options.texture);
     if (error) {  // bad input is reported the same with or without a display
         std::fprintf(stderr, "facet-view: %s\n", error->what().c_str());
         return 2;
     }
     ui.scenePath = path;
     ui.folder = std::filesystem::path(path).parent_path().string();
-    ui.folderFiles = listSceneFiles(ui.folder, &ui.folderError);
+    ui.folderFiles = listFolder(ui.folder, &ui.folderError);
+    ui.saveScenePath = defaultSavePath(path);
     ui.texturePath = model.scene.texturePath;
     ui.vsync = !options.noVsync;
     model.sizePolicy = options.keepSceneSize ? SizePolicy::SceneSize : SizePolicy::FollowWindow;
@@ -190,10 +207,17 @@ int App::run() {
     glfwSwapInterval(ui.vsync ? 1 : 0);
     glfwSetWindowUserPointer(window, this);
     glfwSetKeyCallback(window, onKey);  // before ImGui's, which chains to it
+    installFileDrop(*this);
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder
+    // The panels' layout is kept with the recent files, never in the working folder.
+    ui.iniPath = configFolder().empty() ? "" : configFolder() + "/imgui.ini";
+    if (!ui.iniPath.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(configFolder(), ec);
+    }
+    ImGui::GetIO().IniFilename = ui.iniPath.empty() ? nullptr : ui.iniPath.c_str();
     ImGui::StyleColorsDark();
     ImGui::GetStyle().Alpha = 0.95f;
     ImGui_ImplGlfw_InitForOpenGL(window, true);
@@ -232,6 +256,7 @@ int App::run() {
     if (!shown) shown = &display;
     accuracy.cancel();  // a ground truth in flight stops within milliseconds
     accuracy.wait();
+    loading.cancel();
 
     if (status == 0 && !options.screenshot.empty() && shown) {
         if (Status e = saveFrameShot(*shown, options.screenshot)) {

@@ -10,9 +10,11 @@
 
 #include "accuracy_job.hpp"
 #include "compare.hpp"
+#include "file_list.hpp"
 #include "frame_stats.hpp"
 #include "gl_frame.hpp"
 #include "layout.hpp"
+#include "load_job.hpp"
 #include "options.hpp"
 #include "render_worker.hpp"
 #include "renderer_choice.hpp"
@@ -26,10 +28,14 @@ namespace facet::view {
 /// What the panels keep between frames: text fields, the folder listing, the error popup.
 struct UiState {
     std::string scenePath;  ///< the Scene panel's path field
-    std::string folder;     ///< the folder whose .scene files are listed
-    std::vector<std::string> folderFiles;
+    std::string folder;     ///< the folder the Scene panel's browser lists
+    std::vector<FolderEntry> folderFiles;
     std::string folderError;
-    std::string texturePath;  ///< the Texture panel's path field
+    std::string saveScenePath;         ///< where "Save scene" (Ctrl+S) writes
+    std::string lastSave;              ///< what the last save wrote (or its error)
+    std::vector<std::string> dropped;  ///< paths dropped on the window since the last frame
+    std::string iniPath;               ///< ImGui's layout file (kept alive for ImGui)
+    std::string texturePath;           ///< the Texture panel's path field
     std::string screenshotFolder = ".";
     bool screenshotWindowToo = false;  ///< the screenshot key also saves the whole window
     std::string lastScreenshot;        ///< what the last screenshot wrote (or its error)
@@ -58,6 +64,7 @@ struct KeyEvents {
     bool resetCamera = false;
     bool togglePanels = false;
     bool cycleRenderer = false;  ///< G: CPU engine → OpenGL twin → side by side → CPU engine
+    bool saveScene = false;      ///< Ctrl+S: save the scene shown
 };
 
 /// The whole viewer.
@@ -87,6 +94,7 @@ struct App {
     bool screenshotRequested = false;  ///< from the key or the button; taken this frame
     bool vsyncApplied = true;          ///< the swap interval last set
     AccuracyJob accuracy;              ///< Compare: the methods against the ground truth
+    LoadJob loading;                   ///< a scene or mesh being opened on a worker thread
     std::uint64_t accuracySeen = 0;    ///< reports announced on stdout so far
     /// The view and Compare settings the engine last rendered, so a frame can be skipped while
     /// the accuracy job measures (see frame_loop.cpp).
@@ -102,8 +110,23 @@ struct App {
     int frame(std::chrono::steady_clock::time_point start, bool last);
 };
 
-/// Loads a scene into the model, or opens the error popup and keeps the old scene.
+/// Starts opening a scene or mesh on the loading thread; the old scene stays until it is ready
+/// (sceneFileEvents adopts it), and a failure opens the error popup.
 void openScene(App& app, const std::string& path);
+
+/// Makes a finished load the shown scene: the model adopts it, the panels' fields and the
+/// window title follow.
+void adoptScene(App& app, LoadedScene loaded);
+
+/// Once per frame, panels shown or not: adopts a finished load (or shows its error), opens
+/// dropped files, handles Ctrl+S, and draws the loading progress with its Cancel button.
+void sceneFileEvents(App& app);
+
+/// Sends files dropped on the window to sceneFileEvents.
+void installFileDrop(App& app);
+
+/// Saves the scene shown to the Scene panel's save path (the button and Ctrl+S).
+void saveShownScene(App& app);
 
 /// Loads a texture into the scene, or opens the error popup.
 void openTexture(App& app, const std::string& path);

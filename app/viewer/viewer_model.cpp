@@ -5,18 +5,36 @@
 
 #include "facet/scene_io.hpp"
 #include "file_list.hpp"
+#include "scene_defaults.hpp"
 
 namespace facet::view {
 
 Status ViewerModel::load(const std::string& path) {
-    Result<Scene> loaded = loadScene(path);
+    Result<LoadedScene> loaded = loadSceneOrMesh(path, kBareMeshWidth, kBareMeshHeight);
     if (!loaded) return loaded.error();
-    scene = std::move(loaded.value());
+    adopt(std::move(loaded).value());
+    return std::nullopt;
+}
+
+void ViewerModel::adopt(LoadedScene loaded) {
+    scene = std::move(loaded.scene);
+    bareMesh = loaded.bareMesh;
     ++sceneVersion;
     sceneCamera = scene.camera;
     resetCamera();
-    pushRecent(recent, path, kMaxRecent);
+    applySceneDefaults(scene, bareMesh, settings);
+    rememberFile(loaded.path);
+}
+
+Status ViewerModel::saveScene(const std::string& path) {
+    if (Status error = writeScene(scene, path)) return error;
+    rememberFile(path);
     return std::nullopt;
+}
+
+void ViewerModel::rememberFile(const std::string& path) {
+    pushRecent(recent, path, kMaxRecent);
+    if (!recentFile.empty()) writeRecent(recentFile, recent);
 }
 
 Status ViewerModel::loadTexture(const std::string& path) {

@@ -12,6 +12,7 @@
 #include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
+#include "load_job.hpp"
 #include "orbit.hpp"
 #include "renderer_choice.hpp"
 #include "settings_map.hpp"
@@ -32,16 +33,30 @@ struct ViewerModel {
     RenderSettings settings;
     RendererChoice rendererChoice = RendererChoice::Cpu;  ///< who draws: engine, twin or both
     SizePolicy sizePolicy = SizePolicy::FollowWindow;
-    std::vector<std::string> recent;  ///< scene files opened, most recent first
-    std::uint64_t sceneVersion = 0;   ///< counts loads, so a measurement knows its scene
+    std::vector<std::string> recent;  ///< scene and mesh files opened, most recent first
+    std::string recentFile;           ///< where `recent` is kept across runs; empty: not kept
+    bool bareMesh = false;            ///< the scene was made for a bare mesh (conventions §3b)
+    std::uint64_t sceneVersion = 0;   ///< counts loads, so copies know when the mesh changed
 
     Renderer renderer;  ///< keeps its scratch buffers from frame to frame
     Framebuffer frame;  ///< the last frame rendered
     RenderStats stats;  ///< what the last render did
 
-    /// Loads a scene file; on success it replaces the scene, resets the view and joins the
-    /// recent list; on failure nothing changes and the error names the file and line.
+    /// Loads a scene file or a bare mesh (a scene of kBareMeshWidth × kBareMeshHeight); on
+    /// success it replaces the scene as adopt() does; on failure nothing changes and the error
+    /// names the file and line.
     Status load(const std::string& path);
+
+    /// Takes a loaded scene: resets the view, picks the settings that show what the scene has
+    /// (applySceneDefaults) and puts the file first in the recent list.
+    void adopt(LoadedScene loaded);
+
+    /// Writes what is shown (the scene with the camera of the last prepareFrame()) as a
+    /// .scene file that renders the same frame; it joins the recent list.
+    Status saveScene(const std::string& path);
+
+    /// Puts `path` first in the recent list and writes the list to recentFile.
+    void rememberFile(const std::string& path);
 
     /// Replaces the scene's texture with an image file; on failure nothing changes.
     Status loadTexture(const std::string& path);

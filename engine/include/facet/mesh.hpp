@@ -19,7 +19,14 @@ struct Mesh {
     std::vector<glm::vec3> colors;     ///< RGB in [0,1]; empty means every vertex is white
     std::vector<glm::vec2> uvs;  ///< texture coordinates, v = 0 at the image top; may be empty
     std::vector<std::uint32_t>
-        indices;              ///< three per triangle, counter-clockwise seen from outside
+        indices;  ///< three per triangle, counter-clockwise seen from outside
+    /// Unit normals from the file (an OBJ whose every face corner has a `vn`); empty otherwise,
+    /// and then lighting computes them (normals.hpp).
+    std::vector<glm::vec3> normals;
+    /// The file position each vertex was made from, when the loader split some position into
+    /// several vertices (different `vt` or `vn`); empty means every vertex is its own position.
+    /// Computed normals are shared per position, so texture seams leave no shading seam.
+    std::vector<std::uint32_t> positionIds;
     std::string texturePath;  ///< resolved path of an OBJ map_Kd texture, empty if none
 
     /// Number of vertices.
@@ -30,6 +37,8 @@ struct Mesh {
     bool hasColors() const { return !colors.empty(); }
     /// True when texture coordinates are present.
     bool hasUvs() const { return !uvs.empty(); }
+    /// True when the file gave the normals lighting uses.
+    bool hasNormals() const { return !normals.empty(); }
 };
 
 /// Axis-aligned bounds of a mesh's positions (min > max when the mesh is empty).

@@ -16,7 +16,8 @@ Result<Mesh> parseOff(std::string_view text, const std::string& fileName);
 Result<Mesh> loadOff(const std::string& path);
 
 /// Reads an .obj file (and its .mtl); v/vt/vn triples become single-index vertices, v flipped to
-/// the top-down convention, map_Kd resolved into Mesh::texturePath.
+/// the top-down convention, map_Kd resolved into Mesh::texturePath. The `vn` normals are kept
+/// (Mesh::normals) when every face corner has one; split positions are kept in positionIds.
 Result<Mesh> loadObj(const std::string& path);
 
 /// Loads by extension (.off or .obj, case-insensitive).

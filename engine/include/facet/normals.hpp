@@ -1,6 +1,7 @@
 #pragma once
-// Vertex normals for lighting (conventions §6) and the "normals" display (§8). Normals belong to
-// vertex indices, not positions: vertices duplicated for a uv seam or a hard edge keep their own.
+// Vertex normals for lighting (conventions §6) and the "normals" display (§8). The file's own
+// normals when it has them (Mesh::normals); else computed per position (Mesh::positionIds), so
+// the vertices an OBJ split along a texture seam share one normal and no shading seam shows.
 
 #include <vector>
 
@@ -11,10 +12,11 @@
 
 namespace facet {
 
-/// One normal per vertex: the normalised sum of the area-weighted normals of the triangles that
-/// use it. The zero vector (no diffuse or specular term, never NaN) when the vertex has no
-/// triangle of non-zero area, or when its triangles' normals cancel (a two-sided sheet).
-/// Indices must be in range, as every loader guarantees.
+/// One normal per vertex: Mesh::normals when the file gave them, else the normalised sum of the
+/// area-weighted normals of the triangles around the vertex's position. The zero vector (no
+/// diffuse or specular term, never NaN) when the position has no triangle of non-zero area, or
+/// when its triangles' normals cancel (a two-sided sheet). Indices and position ids must be in
+/// range, as every loader guarantees.
 std::vector<glm::vec3> computeVertexNormals(const Mesh& mesh);
 
 /// The same into `normals`, with `scratch` for the sums: both keep their capacity, so a renderer

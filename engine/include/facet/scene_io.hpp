@@ -1,5 +1,6 @@
 #pragma once
-// The .scene format (conventions §1): ten line-oriented fields, the last optional.
+// The .scene format (conventions §1): ten line-oriented fields, the last optional; a bare mesh
+// opened as a scene (§3b); and the writer that saves a scene back to that format.
 
 #include <string>
 #include <string_view>
@@ -24,5 +25,34 @@ Result<Scene> loadScene(const std::string& path);
 /// Replaces the scene's texture with the image at `path` (the CLI's --texture, the viewer's
 /// texture field). On failure the scene is left exactly as it was.
 Status loadSceneTexture(Scene& scene, const std::string& path);
+
+/// What a file holds, as far as opening it goes.
+enum class FileKind { unknown, scene, mesh, image };
+
+/// Decides what `path` holds from its first bytes (image signatures, an OFF header, OBJ
+/// statements, a first line naming a .off/.obj file), else from its extension; unknown when
+/// neither tells (also for a file that cannot be read).
+FileKind fileKind(const std::string& path);
+
+/// Image size a bare mesh gets when none is given (conventions §3b).
+inline constexpr int kBareMeshWidth = 1280;
+inline constexpr int kBareMeshHeight = 720;
+
+/// The scene conventions §3b gives a bare mesh at `width` × `height`: a three-quarter view of its
+/// bounding sphere with the course's up, a point light near the camera, a neutral material.
+/// Scene::path and meshPath are `meshPath`; no texture is loaded.
+Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height);
+
+/// Opens a .scene file, or a bare .off/.obj mesh as sceneForMesh() at `width` × `height` (with
+/// its OBJ map_Kd texture). Anything else is an error saying what was expected.
+Result<Scene> openSceneFile(const std::string& path, int width = kBareMeshWidth,
+                            int height = kBareMeshHeight);
+
+/// The .scene text (conventions §1) of `scene`: mesh and texture paths relative to the folder
+/// of `sceneFile`, numbers in shortest round-trip form, so loading it gives the same scene.
+Result<std::string> sceneText(const Scene& scene, const std::string& sceneFile);
+
+/// Writes sceneText() to `sceneFile`.
+Status writeScene(const Scene& scene, const std::string& sceneFile);
 
 }  // namespace facet

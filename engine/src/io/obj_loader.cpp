@@ -23,6 +23,7 @@
 #include <vector>
 
 #include <tiny_obj_loader.h>
+#include <glm/geometric.hpp>
 
 #include "facet/limits.hpp"
 #include "facet/mesh_io.hpp"
@@ -75,7 +76,7 @@ class MtlReader : public tinyobj::MaterialReader {
     Status problem_;
 };
 
-// Checks the numbers of a `v` or `vt` line (tokens after the keyword).
+// Checks the numbers of a `v`, `vt` or `vn` line (tokens after the keyword).
 std::optional<std::string> checkNumbers(const std::vector<std::string_view>& tokens) {
     for (std::size_t i = 1; i < tokens.size(); ++i) {
         float v = 0.0f;
@@ -134,13 +135,13 @@ Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
         text::splitTokens(line, tokens);
         if (tokens.empty() || tokens[0].front() == '#') continue;
         const std::string_view keyword = tokens[0];
-        if (keyword == "v" || keyword == "vt") {
+        if (keyword == "v" || keyword == "vt" || keyword == "vn") {
             text::splitTokens(text::stripComment(line), tokens);
-            const std::size_t need = keyword == "v" ? 3 : 1;
+            const std::size_t need = keyword == "vt" ? 1 : 3;
             if (tokens.size() - 1 < need) {
-                return fail(keyword == "v" ? "a vertex needs 3 numbers (x y z), got " +
-                                                 std::to_string(tokens.size() - 1)
-                                           : std::string("a texture coordinate needs u [v]"));
+                if (keyword == "vt") return fail("a texture coordinate needs u [v]");
+                return fail(std::string(keyword == "v" ? "a vertex" : "a normal") +
+                            " needs 3 numbers (x y z), got " + std::to_string(tokens.size() - 1));
             }
             if (auto message = checkNumbers(tokens)) return fail(*message);
             ++(keyword == "v" ? positions : texcoords);
@@ -176,6 +177,35 @@ int lineInMessage(const std::string& message) {
         line = line * 10 + (message[i] - '0');
     }
     return line;
+}
+
+// One engine vertex per distinct corner: position, texcoord and (when used) normal index.
+struct CornerKey {
+    std::int64_t v = 0;
+    std::int64_t vt = -1;
+    std::int64_t vn = -1;
+    bool operator==(const CornerKey&) const = default;
+};
+
+struct CornerKeyHash {
+    std::size_t operator()(const CornerKey& k) const {
+        const std::uint64_t h = static_cast<std::uint64_t>(k.v) * 0x9E3779B97F4A7C15ull ^
+                                static_cast<std::uint64_t>(k.vt + 1) * 0xC2B2AE3D27D4EB4Full ^
+                                static_cast<std::uint64_t>(k.vn + 1) * 0x165667B19E3779F9ull;
+        return static_cast<std::size_t>(h ^ (h >> 31));
+    }
+};
+
+// True when every corner of every face names a normal (conventions §3: only then are the
+// file's normals used; a partial set would leave some vertices without one).
+bool everyCornerHasNormal(const tinyobj::ObjReader& reader) {
+    if (reader.GetAttrib().normals.empty()) return false;
+    for (const auto& shape : reader.GetShapes()) {
+        for (const tinyobj::index_t& idx : shape.mesh.indices) {
+            if (idx.normal_index < 0) return false;
+        }
+    }
+    return true;
 }
 
 std::string firstLine(const std::string& message) {
@@ -246,9 +276,14 @@ Result<Mesh> loadObj(const std::string& path) {
     mesh.uvs.reserve(texcoordCount > 0 ? cornerCount / 2 : 0);
     mesh.indices.reserve(3 * cornerCount);
     bool anyUv = false;
-    // One engine vertex per distinct (position, texcoord) pair; normals are not stored yet.
-    std::unordered_map<std::uint64_t, std::uint32_t> merged;
+    const bool useNormals = everyCornerHasNormal(reader);
+    const auto normalCount = static_cast<std::int64_t>(attrib.normals.size() / 3);
+    // One engine vertex per distinct (position, texcoord[, normal]) triple; positionIds remembers
+    // the position each came from, kept only if some position was split.
+    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> merged;
     merged.reserve(cornerCount);
+    std::vector<bool> positionUsed(static_cast<std::size_t>(positionCount), false);
+    bool positionSplit = false;
     std::vector<std::uint32_t> corners;
     std::size_t face = 0;
     for (const auto& shape : shapes) {
@@ -273,12 +308,28 @@ Result<Mesh> loadObj(const std::string& path) {
                                      std::to_string(vt + 1) + " but the file has " +
                                      std::to_string(texcoordCount)};
                 }
-                const std::uint64_t key =
-                    (static_cast<std::uint64_t>(v) << 32) | static_cast<std::uint64_t>(vt + 1);
-                const auto [it, inserted] =
-                    merged.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+                const std::int64_t vn = useNormals ? idx.normal_index : -1;
+                if (vn >= normalCount) {
+                    return Error{{path, line},
+                                 "normal index out of range: the face refers to vn " +
+                                     std::to_string(vn + 1) + " but the file has " +
+                                     std::to_string(normalCount)};
+                }
+                const auto [it, inserted] = merged.try_emplace(
+                    CornerKey{v, vt, vn}, static_cast<std::uint32_t>(mesh.positions.size()));
                 if (inserted) {
                     const auto vi = static_cast<std::size_t>(v);
+                    positionSplit = positionSplit || positionUsed[vi];
+                    positionUsed[vi] = true;
+                    mesh.positionIds.push_back(static_cast<std::uint32_t>(v));
+                    if (useNormals) {
+                        const auto ni = static_cast<std::size_t>(vn);
+                        const glm::vec3 normal(attrib.normals[3 * ni], attrib.normals[3 * ni + 1],
+                                               attrib.normals[3 * ni + 2]);
+                        const float length = glm::length(normal);
+                        // A zero vn gives no diffuse or specular term, as a computed one would.
+                        mesh.normals.push_back(length > 0.0f ? normal / length : glm::vec3(0.0f));
+                    }
                     mesh.positions.emplace_back(attrib.vertices[3 * vi],
                                                 attrib.vertices[3 * vi + 1],
                                                 attrib.vertices[3 * vi + 2]);
@@ -308,6 +359,7 @@ Result<Mesh> loadObj(const std::string& path) {
         }
     }
     if (!anyUv) mesh.uvs.clear();
+    if (!positionSplit) mesh.positionIds = {};
 
     const std::string texture = diffuseTexture(shapes, materials);
     if (!texture.empty()) {

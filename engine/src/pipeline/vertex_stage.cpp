@@ -29,8 +29,10 @@ std::span<const glm::vec4> VertexStage::transform(const Mesh& mesh, const glm::d
 }
 
 std::span<const glm::vec3> VertexStage::normals(const Mesh& mesh) {
-    const std::uint64_t h =
-        fingerprint(std::span(mesh.indices), fingerprint(std::span(mesh.positions)));
+    const std::uint64_t h = fingerprint(
+        std::span(mesh.normals),
+        fingerprint(std::span(mesh.positionIds),
+                    fingerprint(std::span(mesh.indices), fingerprint(std::span(mesh.positions)))));
     if (h != normalsFingerprint_ || normals_.size() != mesh.positions.size()) {
         computeVertexNormals(mesh, normals_, normalSums_);
         normalsFingerprint_ = h;

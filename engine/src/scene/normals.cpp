@@ -3,6 +3,7 @@
 
 #include "facet/normals.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -31,9 +32,22 @@ std::vector<glm::vec3> computeVertexNormals(const Mesh& mesh) {
 void computeVertexNormals(const Mesh& mesh, std::vector<glm::vec3>& normals,
                           std::vector<glm::dvec4>& scratch) {
     const std::size_t n = mesh.vertexCount();
+    if (mesh.normals.size() == n && n > 0) {
+        normals.assign(mesh.normals.begin(), mesh.normals.end());
+        return;
+    }
+    // Sums per position: a vertex's own index when the loader split no position.
+    const bool shared = mesh.positionIds.size() == n && n > 0;
+    std::size_t slots = n;
+    if (shared)
+        slots =
+            std::size_t{*std::max_element(mesh.positionIds.begin(), mesh.positionIds.end())} + 1;
+    const auto slot = [&](std::uint32_t v) -> std::size_t {
+        return shared ? mesh.positionIds[v] : v;
+    };
     // Double accumulation: a vertex of a fine mesh sums many small, nearly parallel vectors.
     // xyz: the weighted sum; w: the sum of the weights' lengths (for the cancellation test).
-    scratch.assign(n, glm::dvec4(0.0));
+    scratch.assign(slots, glm::dvec4(0.0));
 
     const std::size_t triangles = mesh.triangleCount();
     for (std::size_t t = 0; t < triangles; ++t) {
@@ -44,15 +58,16 @@ void computeVertexNormals(const Mesh& mesh, std::vector<glm::vec3>& normals,
         const glm::dvec3 p2(mesh.positions[v[2]]);
         const glm::dvec3 weighted = glm::cross(p1 - p0, p2 - p0);
         const glm::dvec4 add(weighted, glm::length(weighted));
-        for (int k = 0; k < 3; ++k) scratch[v[k]] += add;
+        for (int k = 0; k < 3; ++k) scratch[slot(v[k])] += add;
     }
 
     normals.assign(n, glm::vec3(0.0f));
     for (std::size_t i = 0; i < n; ++i) {
-        const glm::dvec3 sum(scratch[i]);
+        const glm::dvec4& s = scratch[slot(static_cast<std::uint32_t>(i))];
+        const glm::dvec3 sum(s);
         const double length = glm::length(sum);
         // Also false for 0 = 0 (no face of non-zero area), so the division below is safe.
-        if (length > kCancelled * scratch[i].w) normals[i] = glm::vec3(sum / length);
+        if (length > kCancelled * s.w) normals[i] = glm::vec3(sum / length);
     }
 }
 

@@ -1,0 +1,40 @@
+#include "scene_defaults.hpp"
+
+namespace facet::view {
+
+void applySceneDefaults(const Scene& scene, bool bareMesh, RenderSettings& settings) {
+    if (scene.texture && scene.mesh->hasUvs()) {
+        settings.shader = ShaderKind::Texture;
+        settings.combine = true;
+        settings.lighting = Lighting::Gouraud;
+    } else if (bareMesh) {
+        settings.shader = ShaderKind::Painter;
+        settings.combine = false;
+        settings.lighting = Lighting::Gouraud;
+    } else {
+        settings.shader = ShaderKind::Painter;
+        settings.combine = false;
+        settings.lighting = Lighting::Off;
+    }
+}
+
+void lightingChosen(RenderSettings& settings) {
+    if (settings.shader == ShaderKind::Texture && settings.lighting != Lighting::Off)
+        settings.combine = true;
+}
+
+std::string noEffectNote(const Scene& scene, const RenderSettings& settings) {
+    if (settings.shader != ShaderKind::Texture) return {};
+    if (!scene.texture)
+        return "The scene has no texture: the texture shader samples white. Load an image in "
+               "the Texture panel or drop one on the window.";
+    if (!scene.mesh->hasUvs())
+        return "This mesh has no texture coordinates: every pixel samples the texel at uv = "
+               "(0, 0).";
+    if (settings.lighting != Lighting::Off && !settings.combine)
+        return "Lighting has no effect: the texture shader shows the bare texel unless "
+               "\"combine\" multiplies it by the lit colour.";
+    return {};
+}
+
+}  // namespace facet::view
