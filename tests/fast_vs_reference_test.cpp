@@ -194,22 +194,21 @@ INSTANTIATE_TEST_SUITE_P(Scenes, FastVsReference, testing::ValuesIn(allCases()),
 // before, fails: that is the band.
 TEST(SpotSeams, LitSpotMatchesTheWeldedReferenceWithin1Lsb) {
     const std::string path = facet::test::sharedScenePath("scenes/spot_1280x720");
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data not found: " << path;
+    REQUIRE_SHARED_DATA(path);
     facet::Result<facet::Scene> loaded = facet::loadScene(path);
     ASSERT_TRUE(loaded) << loaded.error().what();
     const facet::Scene& spot = *loaded;
-    ASSERT_EQ(spot.mesh.vertexCount(), 3225u);
-    ASSERT_EQ(spot.mesh.positionIds.size(), 3225u);
+    ASSERT_EQ(spot.mesh->vertexCount(), 3225u);
+    ASSERT_EQ(spot.mesh->positionIds.size(), 3225u);
 
-    facet::Scene welded = spot;
-    facet::Mesh& w = welded.mesh;
+    facet::Mesh w = *spot.mesh;
     std::map<std::tuple<float, float, float>, std::uint32_t> byPosition;
-    std::vector<std::uint32_t> remap(spot.mesh.vertexCount());
+    std::vector<std::uint32_t> remap(spot.mesh->vertexCount());
     w.positions.clear();
     w.uvs.clear();
     w.positionIds.clear();
-    for (std::size_t i = 0; i < spot.mesh.vertexCount(); ++i) {
-        const glm::vec3 p = spot.mesh.positions[i];
+    for (std::size_t i = 0; i < spot.mesh->vertexCount(); ++i) {
+        const glm::vec3 p = spot.mesh->positions[i];
         const auto [it, inserted] = byPosition.try_emplace(
             std::tuple(p.x, p.y, p.z), static_cast<std::uint32_t>(w.positions.size()));
         if (inserted) w.positions.push_back(p);
@@ -217,9 +216,13 @@ TEST(SpotSeams, LitSpotMatchesTheWeldedReferenceWithin1Lsb) {
     }
     ASSERT_EQ(w.positions.size(), 2930u);
     for (std::uint32_t& index : w.indices) index = remap[index];
+    facet::Scene welded = spot;
+    welded.mesh = std::make_shared<const facet::Mesh>(std::move(w));
 
     facet::Scene perVertex = spot;  // the old rule: each split vertex its own normal
-    perVertex.mesh.positionIds.clear();
+    facet::Mesh unwelded = *spot.mesh;
+    unwelded.positionIds.clear();
+    perVertex.mesh = std::make_shared<const facet::Mesh>(std::move(unwelded));
 
     for (const Lighting lighting : {Lighting::Gouraud, Lighting::Phong}) {
         facet::RenderSettings settings;
@@ -229,15 +232,15 @@ TEST(SpotSeams, LitSpotMatchesTheWeldedReferenceWithin1Lsb) {
         facet::Framebuffer fast;
         renderer.render(spot, settings, fast);
         const facet::reference::Image ref = facet::reference::render(welded, settings);
-        const facet::test::Comparison r =
-            facet::test::compare(fast, ref, settings.shader, settings.background);
+        const facet::ReferenceDiff r =
+            facet::compareWithReference(fast, ref, settings.shader, settings.background);
         EXPECT_LE(r.maxColorDiff, 1) << facet::toString(lighting) << ": " << r.examples;
-        EXPECT_GT(r.covered, 50000u);
+        EXPECT_GT(r.comparedCovered, 50000u);
 
         facet::Framebuffer banded;
         renderer.render(perVertex, settings, banded);
-        const facet::test::Comparison old =
-            facet::test::compare(banded, ref, settings.shader, settings.background);
+        const facet::ReferenceDiff old =
+            facet::compareWithReference(banded, ref, settings.shader, settings.background);
         EXPECT_GT(old.maxColorDiff, 10) << "the per-vertex normals should show the band";
     }
 }

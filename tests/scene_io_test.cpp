@@ -106,7 +106,7 @@ TEST_F(SceneIo, ABareMeshIsFramedFromAThreeQuarterViewWithTheCourseUp) {
             EXPECT_GT(std::abs(d.z), 0.3 * glm::length(d));
             // Every vertex in the image with a margin, and the model not tiny in it.
             glm::dvec2 lo(1e30), hi(-1e30);
-            for (const glm::vec3& p : s.mesh.positions) {
+            for (const glm::vec3& p : s.mesh->positions) {
                 const glm::dvec3 px = projectToPixel(s.camera, glm::dvec3(p));
                 ASSERT_GT(px.z, 0.0);
                 lo = glm::min(lo, glm::dvec2(px));
@@ -118,11 +118,11 @@ TEST_F(SceneIo, ABareMeshIsFramedFromAThreeQuarterViewWithTheCourseUp) {
             EXPECT_LT(hi.y, 0.98 * h) << name;
             EXPECT_GT(std::max((hi.x - lo.x) / w, (hi.y - lo.y) / h), 0.4) << name;
             // The light is a point near the camera, lighting the side the camera sees.
-            EXPECT_EQ(s.light.position.w, 1.0);
-            const glm::dvec3 light(s.light.position);
+            EXPECT_EQ(s.lighting.light.position.w, 1.0);
+            const glm::dvec3 light(s.lighting.light.position);
             EXPECT_LT(glm::length(light - s.camera.eye), glm::length(d));
-            EXPECT_GT(s.light.intensity, 0.0);
-            EXPECT_GT(s.material.kd, 0.0);
+            EXPECT_GT(s.lighting.light.intensity, 0.0);
+            EXPECT_GT(s.lighting.material.kd, 0.0);
         }
     }
 }
@@ -135,7 +135,7 @@ TEST_F(SceneIo, ASavedSceneLoadsAsTheSameSceneAndRendersTheSameBytes) {
     // Numbers that need every digit, and a directional light (5 numbers).
     original->camera.eye = {2.5000000000000004, 1.1, -2.3};
     original->camera.focal = 1100.0 / 3.0;
-    original->light.position = {0.3, -1.0, 0.1, 0.0};
+    original->lighting.light.position = {0.3, -1.0, 0.1, 0.0};
     const std::string saved = (dir / "sub" / "spot copy.scene").string();
     fs::create_directories(dir / "sub");
     ASSERT_FALSE(writeScene(*original, saved));
@@ -155,10 +155,10 @@ TEST_F(SceneIo, ASavedSceneLoadsAsTheSameSceneAndRendersTheSameBytes) {
     EXPECT_EQ(back->camera.focal, original->camera.focal);
     EXPECT_EQ(back->camera.width, original->camera.width);
     EXPECT_EQ(back->camera.height, original->camera.height);
-    EXPECT_EQ(back->ambient, original->ambient);
-    EXPECT_EQ(back->light.position, original->light.position);
-    EXPECT_EQ(back->light.intensity, original->light.intensity);
-    EXPECT_EQ(back->material.s, original->material.s);
+    EXPECT_EQ(back->lighting.ambient, original->lighting.ambient);
+    EXPECT_EQ(back->lighting.light.position, original->lighting.light.position);
+    EXPECT_EQ(back->lighting.light.intensity, original->lighting.light.intensity);
+    EXPECT_EQ(back->lighting.material.s, original->lighting.material.s);
     EXPECT_EQ(fs::canonical(back->texturePath), fs::canonical(original->texturePath));
 
     RenderSettings settings;

@@ -198,9 +198,10 @@ struct CornerKeyHash {
 
 // True when every corner of every face names a normal (conventions §3: only then are the
 // file's normals used; a partial set would leave some vertices without one).
-bool everyCornerHasNormal(const tinyobj::ObjReader& reader) {
-    if (reader.GetAttrib().normals.empty()) return false;
-    for (const auto& shape : reader.GetShapes()) {
+bool everyCornerHasNormal(const tinyobj::attrib_t& attrib,
+                          const std::vector<tinyobj::shape_t>& shapes) {
+    if (attrib.normals.empty()) return false;
+    for (const auto& shape : shapes) {
         for (const tinyobj::index_t& idx : shape.mesh.indices) {
             if (idx.normal_index < 0) return false;
         }
@@ -276,7 +277,7 @@ Result<Mesh> loadObj(const std::string& path) {
     mesh.uvs.reserve(texcoordCount > 0 ? cornerCount / 2 : 0);
     mesh.indices.reserve(3 * cornerCount);
     bool anyUv = false;
-    const bool useNormals = everyCornerHasNormal(reader);
+    const bool useNormals = everyCornerHasNormal(attrib, shapes);
     const auto normalCount = static_cast<std::int64_t>(attrib.normals.size() / 3);
     // One engine vertex per distinct (position, texcoord[, normal]) triple; positionIds remembers
     // the position each came from, kept only if some position was split.

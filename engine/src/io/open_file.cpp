@@ -2,13 +2,13 @@
 // camera, a light and a material of its own. What a file is comes from its first bytes where
 // they tell (so teapot.obj is never parsed as a scene), else from its extension.
 
-#include <memory>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <string_view>
