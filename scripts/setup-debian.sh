@@ -6,6 +6,7 @@ pkgs=(build-essential cmake pkg-config
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libepoxy-dev libegl-dev libgl1-mesa-dri
   ninja-build
+  libhwy-dev  # Google Highway: the span loop's SIMD, SSE4/AVX2/AVX-512 chosen at run time
   libegl1 libegl-mesa0 libgbm1  # the OpenGL twin: EGL's surfaceless platform on Mesa (llvmpipe)
   xvfb xauth xdotool  # the viewer's tests: a virtual display and real input events
   gnuplot-nox)  # facet bench --chart

@@ -12,6 +12,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/settings.hpp"
 #include "frontend/fetch.hpp"
+#include "frontend/front_end.hpp"
 #include "shading/fast_lighting.hpp"
 #include "shading/samplers.hpp"
 
@@ -50,6 +51,8 @@ struct RasterContext {
     Framebuffer* fb;
     const DrawConstants* constants;
     int subdivision;  ///< N of Interp::Subdivided
+    /// The variant's span loop for the SIMD target picked for this draw; null: scalar only.
+    RasterizeFn spans = nullptr;
 };
 
 /// Rounds a colour to 8 bits per channel as the conventions say; NaN becomes 0.
