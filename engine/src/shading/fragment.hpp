@@ -15,6 +15,7 @@
 #include "frontend/front_end.hpp"
 #include "shading/fast_lighting.hpp"
 #include "shading/samplers.hpp"
+#include "shading/unit_pow.hpp"
 
 namespace facet::detail {
 
@@ -92,6 +93,12 @@ inline glm::vec3 sampleTexture(const Texture& tex, glm::vec2 uv, float lod) {
     if constexpr (F == TextureFilter::Trilinear) return sampleTrilinear(tex, uv, lod);
 }
 
+/// unitPow() as a function object: the specular power of per-pixel (Phong) lighting, the same
+/// function the span loop runs on every lane.
+struct UnitPow {
+    float operator()(float x, float s) const { return unitPow(x, s); }
+};
+
 /// The colour of a fragment from its interpolated varyings (conventions §6, §7): vertex or
 /// Gouraud colour as interpolated; Phong lights the renormalised normal here; the texture
 /// shader returns the texel, times that colour with "combine".
@@ -102,7 +109,8 @@ inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k, float lod
     if constexpr (L.color) rgb = vec3At(a, L.colorAt());
     if constexpr (L.phong) {
         const glm::vec3 n = normalizeOrZero(vec3At(a, L.normalAt()));
-        rgb = shade(rgb, lightIntensity(vec3At(a, L.positionAt()), n, k.eye, k.lighting));
+        rgb =
+            shade(rgb, lightIntensity(vec3At(a, L.positionAt()), n, k.eye, k.lighting, UnitPow{}));
     }
     if constexpr (V::kShader == ShaderKind::Texture) {
         const glm::vec3 texel =

@@ -20,6 +20,7 @@
 #include "shading/lanes-inl.hpp"
 #include "shading/span_loop.hpp"
 #include "shading/texture_lanes-inl.hpp"
+#include "shading/unit_pow-inl.hpp"
 
 #if defined(FACET_SHADING_SPAN_LOOP_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACET_SHADING_SPAN_LOOP_INL_H_
@@ -39,10 +40,10 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2] * dy);
 }
 
-/// lightIntensity() and shade() lane by lane: the same operations in the same order; only pow
-/// runs one lane at a time, and only for the lanes in `live` (it is most of the cost).
+/// lightIntensity() and shade() lane by lane: the same operations in the same order, the
+/// specular power by unitPowLanes(), as the scalar loop's unitPow().
 HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
-                                const DrawConstants& k, unsigned live) {
+                                const DrawConstants& k) {
     const Df d;
     const FastLighting& f = k.lighting;
     auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
@@ -55,11 +56,7 @@ HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const 
     const Vec3Lanes h = normalizeLanes({l.x + v.x, l.y + v.y, l.z + v.z});
     const VecF nl = dotLanes(n, l);
     const VecF nh = clamp01Lanes(dotLanes(n, h));  // std::clamp(nh, 0, 1): the same for NaN too
-    HWY_ALIGN float base[kLanes], power[kLanes] = {};
-    hn::Store(nh, d, base);
-    for (int i = 0; i < kLanes; ++i)
-        if (live >> i & 1u) power[i] = std::pow(base[i], f.shininess);
-    const VecF specular = hn::Load(d, power);
+    const VecF specular = unitPowLanes(nh, f.shininess);
     const VecF lit = all(f.diffuse) * nl + all(f.specular) * specular;
     const VecF intensity = all(f.ambientTerm) + hn::IfThenElseZero(nl > hn::Zero(d), lit);
     return {clamp01Lanes(rgb.x * intensity), clamp01Lanes(rgb.y * intensity),
@@ -78,7 +75,7 @@ inline constexpr bool kVectorTexture =
 
 /// The packed colours of the lanes' pixels for an untextured variant, from their varyings.
 template <class V>
-HWY_INLINE VecI colorLanes(const VecF* a, const DrawConstants& k, unsigned live) {
+HWY_INLINE VecI colorLanes(const VecF* a, const DrawConstants& k) {
     constexpr VaryingLayout L = V::kLayout;
     const Df d;
     Vec3Lanes rgb{hn::Set(d, k.baseColor.r), hn::Set(d, k.baseColor.g), hn::Set(d, k.baseColor.b)};
@@ -86,7 +83,7 @@ HWY_INLINE VecI colorLanes(const VecF* a, const DrawConstants& k, unsigned live)
     if constexpr (L.phong) {
         const int ni = L.normalAt(), pi = L.positionAt();
         const Vec3Lanes n = normalizeLanes({a[ni], a[ni + 1], a[ni + 2]});
-        rgb = lightLanes(rgb, {a[pi], a[pi + 1], a[pi + 2]}, n, k, live);
+        rgb = lightLanes(rgb, {a[pi], a[pi + 1], a[pi + 2]}, n, k);
     }
     return packColorLanes(rgb.x, rgb.y, rgb.z);
 }
@@ -157,7 +154,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setu
                         c = bilinearPackedLanes(k.texture->level(0), a[V::kLayout.uvAt()],
                                                 a[V::kLayout.uvAt() + 1]);
                     else
-                        c = colorLanes<V>(a, k, pass);
+                        c = colorLanes<V>(a, k);
                     if (pass == kAll) {  // the inside of a wide triangle: two plain stores
                         if constexpr (depthTested(V::kShader)) hn::StoreU(depth, d, zrow);
                         hn::StoreU(hn::BitCast(du, c), du, crow);
