@@ -34,6 +34,7 @@
 #include "facet/settings.hpp"
 #include "facet/texture.hpp"
 #include "frontend/front_end.hpp"
+#include "pipeline/span_targets.hpp"
 #include "shading/fragment.hpp"
 #include "shading/scalar_loop.hpp"
 
