@@ -8,6 +8,7 @@ pkgs=(build-essential cmake pkg-config
   ninja-build
   libpng-dev libjpeg62-turbo-dev  # PNG and JPEG textures (libpng, libjpeg-turbo)
   clang libclang-rt-14-dev libomp-dev  # make test-clang and make fuzz (libFuzzer, sanitizers, OpenMP)
+  libhwy-dev  # Google Highway: the span loop's SIMD, SSE4/AVX2/AVX-512 chosen at run time
   libegl1 libegl-mesa0 libgbm1  # the OpenGL twin: EGL's surfaceless platform on Mesa (llvmpipe)
   xvfb xauth xdotool  # the viewer's tests: a virtual display and real input events
   gnuplot-nox)  # facet bench --chart

@@ -37,6 +37,7 @@
 #include "facet/settings.hpp"
 #include "facet/texture.hpp"
 #include "frontend/front_end.hpp"
+#include "pipeline/span_targets.hpp"
 #include "shading/fragment.hpp"
 #include "shading/scalar_loop.hpp"
 #include "shared_data.hpp"
@@ -346,7 +347,7 @@ void shadeQuad(benchmark::State& state) {
     Framebuffer fb;
     fb.resize(kQuad, kQuad);
     fb.clear(0);
-    RasterContext ctx{&fb, &constants, 16};
+    RasterContext ctx{&fb, &constants, 16, spanLoopFor<V>()};
     std::size_t pixels = 0;
     for (auto _ : state) {
         state.PauseTiming();
@@ -376,7 +377,7 @@ void shadeOccluded(benchmark::State& state) {
     fb.resize(kQuad, kQuad);
     fb.clear(0);
     std::fill(fb.depth.begin(), fb.depth.end(), 0.0f);
-    RasterContext ctx{&fb, &constants, 16};
+    RasterContext ctx{&fb, &constants, 16, spanLoopFor<PhongV>()};
     std::size_t pixels = 0;
     for (auto _ : state) {
         pixels = 0;

@@ -17,6 +17,7 @@
 #include "passes/frame_passes.hpp"
 #include "passes/normals_overlay.hpp"
 #include "passes/supersample.hpp"
+#include "pipeline/span_targets.hpp"
 #include "pipeline/variants.hpp"
 #include "pipeline/vertex_stage.hpp"
 #include "scene/fingerprint.hpp"
@@ -117,11 +118,12 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
                                   input.eye, glm::vec3(1.0f)};
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
     const int threads = resolveThreads(settings.threads);
+    const RasterizeFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
         switch (settings.mode) {
             case DrawMode::Solid: {
-                RasterContext ctx{&frame, &constants, subdivision};
+                RasterContext ctx{&frame, &constants, subdivision, spans};
                 impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
                                   frame.height, &rasterizeTriangle<V>, &ctx, threads,
                                   clampedSubPixelBits(settings), stats);

@@ -22,10 +22,18 @@ inline glm::vec3 normalizeOrZero(const glm::vec3& v) {
 }
 }  // namespace detail
 
+namespace detail {
+/// std::pow as a function object: the specular power of per-vertex (Gouraud) lighting.
+struct LibmPow {
+    float operator()(float x, float s) const { return std::pow(x, s); }
+};
+}  // namespace detail
+
 /// I at point `p` with normal `n` (unit, or zero for none), seen from `eye`. Fast version: same
-/// rules as the double one, agreeing to float rounding.
+/// rules as the double one, agreeing to float rounding; `pow` raises n·h to the shininess.
+template <class Pow = detail::LibmPow>
 inline float lightIntensity(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
-                            const FastLighting& lighting) {
+                            const FastLighting& lighting, Pow pow = {}) {
     // With w ≥ 0, xyz − w·p is w·(light point − p) for a point light and xyz for a directional
     // one: one expression, no division, no branch on the light's kind.
     const glm::vec3 l = detail::normalizeOrZero(glm::vec3(lighting.light) - lighting.light.w * p);
@@ -33,7 +41,7 @@ inline float lightIntensity(const glm::vec3& p, const glm::vec3& n, const glm::v
     const glm::vec3 h = detail::normalizeOrZero(l + v);
     const float nl = glm::dot(n, l);
     const float nh = std::clamp(glm::dot(n, h), 0.0f, 1.0f);
-    const float lit = lighting.diffuse * nl + lighting.specular * std::pow(nh, lighting.shininess);
+    const float lit = lighting.diffuse * nl + lighting.specular * pow(nh, lighting.shininess);
     return lighting.ambientTerm + (nl > 0.0f ? lit : 0.0f);
 }
 

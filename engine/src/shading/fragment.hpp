@@ -12,8 +12,10 @@
 #include "facet/framebuffer.hpp"
 #include "facet/settings.hpp"
 #include "frontend/fetch.hpp"
+#include "frontend/front_end.hpp"
 #include "shading/fast_lighting.hpp"
 #include "shading/samplers.hpp"
+#include "shading/unit_pow.hpp"
 
 namespace facet::detail {
 
@@ -50,6 +52,8 @@ struct RasterContext {
     Framebuffer* fb;
     const DrawConstants* constants;
     int subdivision;  ///< N of Interp::Subdivided
+    /// The variant's span loop for the SIMD target picked for this draw; null: scalar only.
+    RasterizeFn spans = nullptr;
 };
 
 /// Rounds a colour to 8 bits per channel as the conventions say; NaN becomes 0.
@@ -89,6 +93,12 @@ inline glm::vec3 sampleTexture(const Texture& tex, glm::vec2 uv, float lod) {
     if constexpr (F == TextureFilter::Trilinear) return sampleTrilinear(tex, uv, lod);
 }
 
+/// unitPow() as a function object: the specular power of per-pixel (Phong) lighting, the same
+/// function the span loop runs on every lane.
+struct UnitPow {
+    float operator()(float x, float s) const { return unitPow(x, s); }
+};
+
 /// The colour of a fragment from its interpolated varyings (conventions §6, §7): vertex or
 /// Gouraud colour as interpolated; Phong lights the renormalised normal here; the texture
 /// shader returns the texel, times that colour with "combine".
@@ -99,7 +109,8 @@ inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k, float lod
     if constexpr (L.color) rgb = vec3At(a, L.colorAt());
     if constexpr (L.phong) {
         const glm::vec3 n = normalizeOrZero(vec3At(a, L.normalAt()));
-        rgb = shade(rgb, lightIntensity(vec3At(a, L.positionAt()), n, k.eye, k.lighting));
+        rgb =
+            shade(rgb, lightIntensity(vec3At(a, L.positionAt()), n, k.eye, k.lighting, UnitPow{}));
     }
     if constexpr (V::kShader == ShaderKind::Texture) {
         const glm::vec3 texel =

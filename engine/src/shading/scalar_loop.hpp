@@ -1,8 +1,8 @@
 #pragma once
 // The triangle pixel loops of the fast path, after the shared front end: the scalar loop (every
-// variant, one pixel at a time) and the choice between it and the 8-lane span loop. Each is a
-// template over a Variant (fragment.hpp), instantiated once per pipeline state by the dispatcher
-// (pipeline/variants.hpp).
+// variant, one pixel at a time) and the choice between it and the vector span loop
+// (span_loop-inl.hpp). Each is a template over a Variant (fragment.hpp), instantiated once per
+// pipeline state by the dispatcher (pipeline/variants.hpp).
 
 #include <algorithm>
 #include <climits>
@@ -104,13 +104,15 @@ template <class V>
     return fragments;
 }
 
-/// The triangle rasterizer of variant V: wide affine or perspective triangles take the 8-lane
-/// span loop, the rest the scalar one. Both are kept out of line so that each is optimised
-/// (and its shading inlined) on its own.
+/// The triangle rasterizer of variant V: wide affine or perspective triangles take the vector
+/// span loop of the draw's SIMD target (RasterContext::spans), the rest the scalar one. Both are
+/// kept out of line so that each is optimised (and its shading inlined) on its own.
 template <class V>
 std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
-    if constexpr (V::kInterp != Interp::Subdivided && !V::kDerivatives)
-        if (setup.box.x1 - setup.box.x0 >= kNarrowBox) return rasterizeSpans<V>(context, setup, p);
+    if constexpr (kHasSpanLoop<V>) {
+        const RasterizeFn spans = static_cast<const RasterContext*>(context)->spans;
+        if (spans && setup.box.x1 - setup.box.x0 >= kNarrowBox) return spans(context, setup, p);
+    }
     return rasterizeScalar<V>(context, setup, p);
 }
 

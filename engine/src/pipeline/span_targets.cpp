@@ -1,0 +1,63 @@
+// One instantiation of every variant's span loop per SIMD target: hwy/foreach_target.h compiles
+// this file once for each target Highway enables, and HWY_DYNAMIC_DISPATCH picks the best one
+// the CPU has. The choice returns a plain function pointer, called once per triangle.
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "pipeline/span_targets.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+
+#include <hwy/highway.h>
+
+#include "pipeline/span_targets.hpp"
+#include "pipeline/variants.hpp"
+#include "shading/span_loop-inl.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::detail::HWY_NAMESPACE {
+
+RasterizeFn spanLoopOf(const VariantKey& key) {
+    RasterizeFn loop = nullptr;
+    dispatch(key, [&](auto variant) {
+        using V = decltype(variant);
+        if constexpr (kHasSpanLoop<V>) loop = &rasterizeSpans<V>;
+    });
+    return loop;
+}
+
+const char* targetName() {
+    return hwy::TargetName(HWY_TARGET);
+}
+
+}  // namespace facet::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#include <atomic>
+
+namespace facet::detail {
+namespace {
+std::atomic<bool> gSpanLoops{true};
+}  // namespace
+
+HWY_EXPORT(spanLoopOf);
+HWY_EXPORT(targetName);
+
+RasterizeFn spanLoop(const VariantKey& key) {
+    if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
+    return HWY_DYNAMIC_DISPATCH(spanLoopOf)(key);
+}
+
+std::int64_t spanTargetsCompiled() {
+    return HWY_TARGETS;
+}
+
+void enableSpanLoops(bool enabled) {
+    gSpanLoops.store(enabled, std::memory_order_relaxed);
+}
+
+const char* spanTarget() {
+    return HWY_DYNAMIC_DISPATCH(targetName)();
+}
+
+}  // namespace facet::detail
+#endif  // HWY_ONCE

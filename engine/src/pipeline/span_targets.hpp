@@ -1,0 +1,34 @@
+#pragma once
+// The vector span loops, compiled once per SIMD target (SSE4, AVX2, AVX-512 and Highway's
+// portable fallback on x86), and the run-time choice among them: once per draw, never per pixel.
+
+#include <cstdint>
+
+#include "frontend/front_end.hpp"
+#include "pipeline/variants.hpp"
+
+namespace facet::detail {
+
+/// The span loop of `key`'s variant for the best SIMD target this CPU has (Highway's run-time
+/// choice, which tests may restrict with hwy::SetSupportedTargetsForTest); null when the
+/// variant has none (subdivided interpolation, trilinear filtering).
+RasterizeFn spanLoop(const VariantKey& key);
+
+/// The name of the SIMD target spanLoop() picks now, e.g. "AVX2".
+const char* spanTarget();
+
+/// The Highway targets (HWY_* bits) the span loops were compiled for.
+std::int64_t spanTargetsCompiled();
+
+/// Turns the span loops off (spanLoop() returns null: every triangle takes the scalar loop) or
+/// back on, for the whole process: the scalar loop is the reference the vector targets must
+/// equal bit for bit. Not for use while a draw runs.
+void enableSpanLoops(bool enabled);
+
+/// spanLoop() for a compile-time Variant.
+template <class V>
+RasterizeFn spanLoopFor() {
+    return spanLoop({V::kShader, V::kInterp, V::kLayout, V::kFilter, V::kCombine});
+}
+
+}  // namespace facet::detail

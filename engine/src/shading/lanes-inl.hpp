@@ -1,0 +1,88 @@
+// A vector of pixels for the span loop, one lane per pixel: the lane operations the loop shares
+// (colour rounding and packing, clamps, dot products, normalisation), written with Google
+// Highway. Every operation is the scalar one lane by lane, in the same order, so a lane equals
+// the scalar loop bit for bit (the engine is built with -ffp-contract=off: no fused multiply-add
+// may merge two roundings into one on the targets that have FMA).
+//
+// Compiled once per SIMD target (hwy/foreach_target.h re-includes the file that includes this
+// one), hence the toggle guard instead of #pragma once.
+
+#include <cstdint>
+
+#if defined(FACET_SHADING_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FACET_SHADING_LANES_INL_H_
+#undef FACET_SHADING_LANES_INL_H_
+#else
+#define FACET_SHADING_LANES_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::detail::HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+/// One float per pixel, as many lanes as the target has (4 with SSE4, 8 with AVX2, 16 with
+/// AVX-512).
+using Df = hn::ScalableTag<float>;
+using Di = hn::RebindToSigned<Df>;
+using Du = hn::RebindToUnsigned<Df>;
+using VecF = hn::Vec<Df>;
+using VecI = hn::Vec<Di>;
+using MaskF = hn::Mask<Df>;
+
+/// Lanes per vector, a compile-time constant on every target the engine compiles.
+inline constexpr int kLanes = static_cast<int>(HWY_LANES(float));
+
+/// Bit i set where lane i of `m` is true.
+HWY_INLINE unsigned laneBits(MaskF m) {
+    std::uint8_t bytes[8] = {};
+    hn::StoreMaskBits(Df(), m, bytes);
+    return static_cast<unsigned>(bytes[0]) | static_cast<unsigned>(bytes[1]) << 8;
+}
+
+/// toByte() lane by lane: clamp to [0, 1] (NaN to 0), scale, round half up.
+HWY_INLINE VecI toByteLanes(VecF c) {
+    const Df d;
+    const VecF zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    const VecF v = hn::IfThenElse(c > zero, hn::IfThenElse(c < one, c, one), zero);
+    return hn::ConvertTo(Di(), v * hn::Set(d, 255.0f) + hn::Set(d, 0.5f));
+}
+
+/// packColor() lane by lane: opaque RGBA8, R in the low byte.
+HWY_INLINE VecI packColorLanes(VecF r, VecF g, VecF b) {
+    const VecI opaque = hn::Set(Di(), static_cast<std::int32_t>(0xFF000000u));
+    return toByteLanes(r) | hn::ShiftLeft<8>(toByteLanes(g)) | hn::ShiftLeft<16>(toByteLanes(b)) |
+           opaque;
+}
+
+/// glm::clamp(c, 0, 1) lane by lane (NaN stays NaN, as there).
+HWY_INLINE VecF clamp01Lanes(VecF c) {
+    const Df d;
+    const VecF zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    return hn::IfThenElse(c < zero, zero, hn::IfThenElse(c > one, one, c));
+}
+
+/// Colours or vectors of the lanes' pixels.
+struct Vec3Lanes {
+    VecF x, y, z;
+};
+
+HWY_INLINE VecF dotLanes(const Vec3Lanes& a, const Vec3Lanes& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;  // glm::dot's order: (x + y) + z
+}
+
+/// normalizeOrZero() lane by lane (sqrt correctly rounded, like std::sqrt).
+HWY_INLINE Vec3Lanes normalizeLanes(const Vec3Lanes& v) {
+    const Df d;
+    const VecF length2 = dotLanes(v, v);
+    const VecF inv = hn::Set(d, 1.0f) / hn::Sqrt(length2);
+    const VecF scale = hn::IfThenElseZero(length2 > hn::Zero(d), inv);
+    return {v.x * scale, v.y * scale, v.z * scale};
+}
+
+}  // namespace facet::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // FACET_SHADING_LANES_INL_H_

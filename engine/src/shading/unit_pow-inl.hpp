@@ -1,0 +1,59 @@
+// unitPow() (unit_pow.hpp) lane by lane: the same operations in the same order, so every lane
+// equals the scalar function bit for bit on every SIMD target (no fused multiply-add: Highway's
+// MulAdd would be one rounding on AVX2 and two on SSE4).
+//
+// Compiled once per SIMD target (see lanes-inl.hpp).
+
+#include <cstdint>
+
+#include "shading/lanes-inl.hpp"
+#include "shading/unit_pow.hpp"
+
+#if defined(FACET_SHADING_UNIT_POW_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FACET_SHADING_UNIT_POW_INL_H_
+#undef FACET_SHADING_UNIT_POW_INL_H_
+#else
+#define FACET_SHADING_UNIT_POW_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::detail::HWY_NAMESPACE {
+
+/// unitPow(x[i], s) for every lane.
+HWY_INLINE VecF unitPowLanes(VecF x, float s) {
+    const Df d;
+    const Di di;
+    auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
+    const MaskF tiny = x < all(kMinNormal);
+    const VecF xs = hn::IfThenElse(tiny, x * all(kTwo24), x);
+    const VecI bits = hn::BitCast(di, xs);
+    VecI e = hn::ShiftRight<23>(bits) - hn::Set(di, 127) -
+             hn::IfThenElseZero(hn::RebindMask(di, tiny), hn::Set(di, 24));
+    VecF m = hn::BitCast(d, hn::Or(hn::And(bits, hn::Set(di, 0x7FFFFF)), hn::Set(di, 0x3F800000)));
+    const MaskF big = m > all(kSqrtHalf2);
+    m = hn::IfThenElse(big, m * all(0.5f), m);
+    e = hn::IfThenElse(hn::RebindMask(di, big), e + hn::Set(di, 1), e);
+    const VecF t = (m - all(1.0f)) / (m + all(1.0f));
+    const VecF t2 = t * t;
+    VecF p = all(kLog2Series[4]);
+    for (int k = 3; k >= 0; --k) p = p * t2 + all(kLog2Series[k]);
+    const VecF y = all(s) * (hn::ConvertTo(d, e) + p * t);
+    const MaskF inRange = y >= all(kMinExponent);
+    const VecF ySafe = hn::IfThenElseZero(inRange, y);
+    const VecI n = hn::ConvertTo(di, ySafe - all(0.5f));
+    const VecF f = ySafe - hn::ConvertTo(d, n);
+    VecF q = all(kExp2Series[6]);
+    for (int k = 5; k >= 0; --k) q = q * f + all(kExp2Series[k]);
+    const VecF scale = hn::BitCast(d, hn::ShiftLeft<23>(n + hn::Set(di, 127)));
+    const VecF r = hn::IfThenElseZero(inRange, q * scale);
+    const VecF one = all(1.0f);
+    const MaskF unit = hn::Or(x == one, hn::Set(d, s) == hn::Zero(d));
+    return hn::IfThenElse(unit, one, hn::IfThenElse(x > hn::Zero(d), r, x));
+}
+
+}  // namespace facet::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // FACET_SHADING_UNIT_POW_INL_H_
