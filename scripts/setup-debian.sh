@@ -7,7 +7,7 @@ pkgs=(build-essential cmake pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev libepoxy-dev libegl-dev libgl1-mesa-dri
   ninja-build
   libegl1 libegl-mesa0 libgbm1  # the OpenGL twin: EGL's surfaceless platform on Mesa (llvmpipe)
-  xvfb xauth xdotool  # the viewer's tests: a virtual display and real input events
+  xvfb xauth xdotool x11-utils  # the viewer's tests: a virtual display, real input events, xprop
   gnuplot-nox)  # facet bench --chart
 # Extra packages named on the command line (e.g. doxygen for make doc).
 pkgs+=("$@")

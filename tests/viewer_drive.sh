@@ -16,6 +16,10 @@
 #   renderers  press G four times, a second apart: CPU engine → OpenGL twin → side by side →
 #           CPU engine → OpenGL twin
 #   combo   open the Render panel's renderer combo and click its second entry (OpenGL twin)
+#   steps   run $FACET_DRIVE_STEPS, ';'-separated commands of this script: drag B X Y DX DY N,
+#           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, pause SECONDS
+# With FACET_DRIVE_QUIT=term the viewer is stopped with SIGTERM instead of Escape (so a last
+# --window-shot still shows what Escape would close, the help for one).
 set -u
 scenario=$1
 out=$2
@@ -52,6 +56,16 @@ drag() {  # button x0 y0 dx dy steps
   sleep 0.3
 }
 
+ctrldrag() {  # x0 y0 dx dy steps, left button with Ctrl held
+  xdotool keydown ctrl
+  drag 1 "$@"
+  xdotool keyup ctrl
+}
+at() { xdotool mousemove --window "$wid" "$1" "$2"; sleep 0.1; }
+key() { xdotool key "$@"; sleep 0.4; }
+click() { xdotool click "$1"; sleep 0.3; }
+pause() { sleep "$1"; }
+
 case "$scenario" in
   none) ;;
   orbit)
@@ -61,7 +75,7 @@ case "$scenario" in
     ;;
   panel) drag 1 120 19 160 120 6 ;;
   pan) drag 3 800 450 100 50 5 ;;
-  divider) drag 1 640 450 260 0 5 ;;
+  divider) drag 1 1020 450 260 0 5 ;;
   resize) xdotool windowsize "$wid" 800 600; sleep 1 ;;
   key) xdotool mousemove --window "$wid" 800 450; sleep 0.2; xdotool key p; sleep 0.5 ;;
   renderers)
@@ -76,11 +90,16 @@ case "$scenario" in
     xdotool mousemove --window "$wid" 110 133 click 1
     sleep 1
     ;;
+  steps) eval "${FACET_DRIVE_STEPS:-}" ;;
   *) echo "viewer_drive: unknown scenario $scenario" >&2 ;;
 esac
 
 sleep 0.5
-xdotool mousemove --window "$wid" 800 450 key Escape
+if [ "${FACET_DRIVE_QUIT:-}" = term ]; then
+  kill -TERM "$pid"
+else
+  xdotool mousemove --window "$wid" 800 450 key Escape
+fi
 # Escape should end it within a second; SIGTERM also makes it write its outputs.
 i=0
 while kill -0 "$pid" 2>/dev/null && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done

@@ -58,6 +58,22 @@ bool sameMethod(const RenderSettings& a, const RenderSettings& b) {
            a.supersample == b.supersample;
 }
 
+std::vector<app::AccuracyMethod> methodsBelowTruth(const std::vector<app::AccuracyMethod>& methods,
+                                                   int samples, std::string* leftOut) {
+    std::vector<app::AccuracyMethod> kept;
+    std::string out;
+    for (const app::AccuracyMethod& m : methods) {
+        if (std::max(1, m.settings.supersample) < samples) {
+            kept.push_back(m);
+        } else {
+            if (!out.empty()) out += ", ";
+            out += m.name;
+        }
+    }
+    if (leftOut) *leftOut = out;
+    return kept;
+}
+
 void markPareto(std::vector<AccuracyRow>& rows) {
     for (AccuracyRow& r : rows) {
         r.pareto = std::none_of(rows.begin(), rows.end(), [&r](const AccuracyRow& o) {
@@ -183,8 +199,8 @@ void AccuracyJob::run(const Request& request) {
         report->width = scene.camera.width;
         report->height = scene.camera.height;
         report->frames = request.frames;
-        const std::vector<app::AccuracyMethod> methods =
-            app::accuracyMethods(scene, request.view.settings);
+        const std::vector<app::AccuracyMethod> methods = methodsBelowTruth(
+            app::accuracyMethods(scene, request.view.settings), request.samples, &report->leftOut);
 
         const auto t0 = Clock::now();
         const GroundTruth truth =
