@@ -8,7 +8,7 @@
 # to do with the window (all coordinates relative to it), then Escape closes it:
 #   none    nothing
 #   orbit   left drag across the image, then three wheel turns towards the scene
-#   panel   left drag that starts on the title bar of the "facet" panel
+#   panel   left drag that starts on the side bar's title row
 #   pan     right drag across the image
 #   divider left drag from the middle of the window to x = 900 (the Compare divider)
 #   resize  resize the window to 800x600
@@ -84,10 +84,10 @@ case "$scenario" in
     sleep 1
     ;;
   combo)
-    # The combo is the Render panel's first row, open at start (panel at 10,10; 360 wide).
-    xdotool mousemove --window "$wid" 110 92 click 1
+    # The combo is the Render panel's first row, open at start (the side bar at the left).
+    xdotool mousemove --window "$wid" 110 114 click 1
     sleep 0.5
-    xdotool mousemove --window "$wid" 110 133 click 1
+    xdotool mousemove --window "$wid" 110 155 click 1
     sleep 1
     ;;
   steps) eval "${FACET_DRIVE_STEPS:-}" ;;

@@ -88,7 +88,10 @@ TEST(LightMarker, DraggingPutsTheLightUnderThePointerAtTheSameDistance) {
     // Far outside the sphere's outline: on the outline, the distance kept.
     const glm::dvec4 edge = dragLight(c, light, target, 5.0, {5000.0, 240.0});
     EXPECT_NEAR(glm::length(glm::dvec3(edge)), 2.0, 1e-9);
-    EXPECT_GT(edge.x, 1.5);
+    // The tangent point seen from the eye at distance 5: (2·sqrt(1 − 4/25), 0, 4/5).
+    EXPECT_NEAR(edge.x, 2.0 * std::sqrt(1.0 - 4.0 / 25.0), 1e-9);
+    EXPECT_NEAR(edge.z, 0.8, 1e-9);
+    EXPECT_NEAR(glm::dot(glm::dvec3(edge) - c.eye, glm::dvec3(edge)), 0.0, 1e-9);  // tangent
     // Directional: the direction follows, |xyz| is kept, w stays 0.
     const glm::dvec4 sun(0.0, 0.0, 10.0, 0.0);
     const glm::dvec4 turned = dragLight(c, sun, target, 5.0, {500.0, 240.0});
@@ -99,6 +102,34 @@ TEST(LightMarker, DraggingPutsTheLightUnderThePointerAtTheSameDistance) {
     EXPECT_NEAR(m.pixel.x, 500.0, 1e-6);
     // A non-finite pointer changes nothing.
     EXPECT_EQ(dragLight(c, light, target, 5.0, {NAN, 1.0}), light);
+}
+
+TEST(LightMarker, AnOffScreenLightSitsOnTheBorderInItsDirection) {
+    const Camera c = testCamera();
+    const glm::dvec3 target(0.0);
+    // In view: its projection.
+    LightMarker m = lightMarker(c, glm::dvec4(0.5, 0.0, 0.0, 1.0), target, 5.0);
+    EXPECT_TRUE(markerInFrame(m, 640, 480));
+    EXPECT_EQ(markerPlace(m, 640, 480, 16.0), m.pixel);
+    // Far right, in front: on the right border, at its height.
+    m = lightMarker(c, glm::dvec4(50.0, 0.0, 0.0, 1.0), target, 5.0);
+    EXPECT_TRUE(m.visible);
+    EXPECT_FALSE(markerInFrame(m, 640, 480));
+    glm::dvec2 p = markerPlace(m, 640, 480, 16.0);
+    EXPECT_NEAR(p.x, 640.0 - 16.0, 1e-9);
+    EXPECT_NEAR(p.y, 240.0, 1e-9);
+    // Behind the camera and above it (world +y is image up here): on the top border.
+    m = lightMarker(c, glm::dvec4(0.0, 3.0, 9.0, 1.0), target, 5.0);
+    EXPECT_FALSE(m.visible);
+    p = markerPlace(m, 640, 480, 16.0);
+    EXPECT_NEAR(p.y, 16.0, 1e-9);
+    EXPECT_NEAR(p.x, 320.0, 1e-9);
+    // Dragging it from there brings it into view under the pointer.
+    const glm::dvec4 moved = dragLight(c, glm::dvec4(0.0, 3.0, 9.0, 1.0), target, 5.0, p);
+    const LightMarker after = lightMarker(c, moved, target, 5.0);
+    EXPECT_TRUE(markerInFrame(after, 640, 480));
+    EXPECT_NEAR(after.pixel.x, p.x, 1e-6);
+    EXPECT_NEAR(after.pixel.y, p.y, 1e-6);
 }
 
 TEST(LightMarker, CtrlDragTurnsItTheWayThePointerGoes) {

@@ -13,8 +13,10 @@
 namespace facet::view {
 namespace {
 
-/// Window pixels around the marker's centre that grab it.
+/// Window pixels around the marker's centre that grab it, and the inset of a marker shown on
+/// the frame's border (its light off-screen or behind the camera).
 constexpr float kGrabRadius = 12.0f;
+constexpr double kBorderInset = 16.0;
 
 ImVec2 toWindow(const App& app, glm::dvec2 pixel) {
     const Camera& c = app.model.scene.camera;
@@ -28,9 +30,11 @@ LightMarker marker(const App& app) {
                        app.model.orbit.distance);
 }
 
-bool inView(const App& app, ImVec2 p) {
-    const Rect& v = app.view;
-    return p.x >= v.x && p.y >= v.y && p.x < v.x + v.w && p.y < v.y + v.h;
+/// Where the marker is drawn, in frame pixels (on the border when the light is off-screen).
+glm::dvec2 placeOf(const App& app, const LightMarker& m) {
+    const Camera& c = app.model.scene.camera;
+    const double inset = kBorderInset * app.work.scale * c.width / std::max(1, app.view.w);
+    return markerPlace(m, c.width, c.height, inset);
 }
 
 }  // namespace
@@ -41,6 +45,10 @@ glm::dvec4& lightPosition(App& app) {
 
 const glm::dvec4& lightPosition(const App& app) {
     return lightPosition(const_cast<App&>(app));
+}
+
+glm::dvec2 lightMarkerPlace(const App& app) {
+    return placeOf(app, marker(app));
 }
 
 bool lightMarkerShown(const App& app) {
@@ -54,9 +62,7 @@ bool startLightDrag(App& app) {
         app.work.lightDrag = LightDrag::Turn;
         return true;
     }
-    const LightMarker m = marker(app);
-    if (!m.visible) return false;
-    const ImVec2 p = toWindow(app, m.pixel);
+    const ImVec2 p = toWindow(app, placeOf(app, marker(app)));
     const float dx = io.MousePos.x - p.x, dy = io.MousePos.y - p.y;
     const float grab = kGrabRadius * app.work.scale;
     if (dx * dx + dy * dy > grab * grab) return false;
@@ -84,15 +90,25 @@ void dragLightStep(App& app) {
 void drawLightMarker(App& app) {
     if (!lightMarkerShown(app)) return;
     const LightMarker m = marker(app);
-    if (!m.visible) return;
-    const ImVec2 p = toWindow(app, m.pixel);
-    if (!inView(app, p)) return;
+    const Camera& c = app.model.scene.camera;
+    const bool inFrame = markerInFrame(m, c.width, c.height);
+    const ImVec2 p = toWindow(app, placeOf(app, m));
     ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the frame, under the windows
     const float s = app.work.scale;
     const bool active = app.work.lightDrag != LightDrag::None;
     const ImU32 fill = active ? IM_COL32(255, 240, 120, 255) : IM_COL32(255, 215, 60, 255);
     const ImU32 edge = IM_COL32(0, 0, 0, 220);
-    if (m.directional && m.aimVisible) {
+    if (!inFrame) {
+        // Off-screen: on the border, a pointer outwards towards where the light is.
+        const ImVec2 centre = toWindow(app, {0.5 * c.width, 0.5 * c.height});
+        const float dx = p.x - centre.x, dy = p.y - centre.y;
+        const float len = std::max(1e-3f, std::sqrt(dx * dx + dy * dy));
+        const float ux = dx / len, uy = dy / len, h = 16.0f * s, half = 6.0f * s;
+        const ImVec2 tip(p.x + ux * h, p.y + uy * h);
+        const ImVec2 base(p.x + ux * 8.0f * s, p.y + uy * 8.0f * s);
+        draw->AddTriangleFilled(tip, ImVec2(base.x - uy * half, base.y + ux * half),
+                                ImVec2(base.x + uy * half, base.y - ux * half), fill);
+    } else if (m.directional && m.aimVisible) {
         // The way the light travels: from the handle to the look-at point, head at the end.
         const ImVec2 a = toWindow(app, m.aim);
         const float dx = a.x - p.x, dy = a.y - p.y;

@@ -59,6 +59,8 @@ LightMarker lightMarker(const Camera& camera, const glm::dvec4& light, const glm
     m.directional = light.w == 0.0;
     m.handle = handleOf(light, target, orbitDistance);
     if (!finite(m.handle)) return m;
+    const glm::dvec4 c = cameraFromWorld(camera) * glm::dvec4(m.handle, 1.0);
+    m.side = {c.x, c.y};
     const glm::dvec3 p = projectToPixel(camera, m.handle);
     m.visible = p.z > 0.0 && std::isfinite(p.x) && std::isfinite(p.y);
     m.pixel = {p.x, p.y};
@@ -66,6 +68,23 @@ LightMarker lightMarker(const Camera& camera, const glm::dvec4& light, const glm
     m.aimVisible = a.z > 0.0 && std::isfinite(a.x) && std::isfinite(a.y);
     m.aim = {a.x, a.y};
     return m;
+}
+
+bool markerInFrame(const LightMarker& m, int width, int height) {
+    return m.visible && m.pixel.x >= 0.0 && m.pixel.y >= 0.0 && m.pixel.x < width &&
+           m.pixel.y < height;
+}
+
+glm::dvec2 markerPlace(const LightMarker& m, int width, int height, double inset) {
+    if (markerInFrame(m, width, height)) return m.pixel;
+    const glm::dvec2 centre(0.5 * width, 0.5 * height);
+    glm::dvec2 d = m.visible ? m.pixel - centre : m.side;
+    if (!(std::abs(d.x) > 0.0 || std::abs(d.y) > 0.0) || !std::isfinite(d.x) || !std::isfinite(d.y))
+        d = {0.0, 1.0};  // straight behind: at the bottom
+    const double hx = std::max(0.0, 0.5 * width - inset), hy = std::max(0.0, 0.5 * height - inset);
+    const double tx = d.x != 0.0 ? hx / std::abs(d.x) : INFINITY;
+    const double ty = d.y != 0.0 ? hy / std::abs(d.y) : INFINITY;
+    return centre + d * std::min(tx, ty);
 }
 
 glm::dvec4 dragLight(const Camera& camera, const glm::dvec4& light, const glm::dvec3& target,
@@ -97,12 +116,15 @@ glm::dvec4 dragLight(const Camera& camera, const glm::dvec4& light, const glm::d
         else
             next = glm::length(near - handle) <= glm::length(far - handle) ? near : far;
     } else {
-        // Past the outline: the sphere's point closest to the ray.
-        const glm::dvec3 closest = eye + dir * std::max(0.0, -b);
-        const glm::dvec3 out = closest - target;
-        const double n = glm::length(out);
-        if (!(n > 0.0)) return light;
-        next = target + out / n * r;
+        // Past the outline (the eye is outside the sphere): the outline's point on the
+        // pointer's side. The outline is the circle of tangent points, centred r²/D from the
+        // target towards the eye, of radius r·sqrt(1 − r²/D²).
+        const glm::dvec3 toEye = eye - target;
+        const double d2 = glm::dot(toEye, toEye);
+        const glm::dvec3 across = dir - toEye * (glm::dot(dir, toEye) / d2);
+        const double n = glm::length(across);
+        if (!(n > 0.0) || !(d2 > r * r)) return light;
+        next = target + toEye * (r * r / d2) + across / n * (r * std::sqrt(1.0 - r * r / d2));
     }
     if (!finite(next)) return light;
     return lightAt(light, target, next);

@@ -25,7 +25,17 @@ struct LightMarker {
     glm::dvec2 pixel{0.0};    ///< the handle in frame pixels
     glm::dvec2 aim{0.0};      ///< directional: the look-at point in frame pixels (arrow head)
     bool aimVisible = false;  ///< the look-at point is in front of the camera
+    glm::dvec2 side{0.0};     ///< camera-space x, y of the handle: its side of the view, even
+                              ///< behind the camera
 };
+
+/// Where the marker is drawn in a width × height frame: its projection when that lies inside
+/// the frame, else on the frame's border inset by `inset` pixels, in the light's direction from
+/// the centre (so a light off-screen or behind the camera can still be seen and grabbed).
+glm::dvec2 markerPlace(const LightMarker& marker, int width, int height, double inset);
+
+/// True when the marker's projection lies inside a width × height frame.
+bool markerInFrame(const LightMarker& marker, int width, int height);
 
 /// The marker of `light` seen by `camera` (the frame's), around the orbit's look-at point.
 LightMarker lightMarker(const Camera& camera, const glm::dvec4& light, const glm::dvec3& target,
@@ -34,7 +44,7 @@ LightMarker lightMarker(const Camera& camera, const glm::dvec4& light, const glm
 /// The light moved so that its marker sits under frame pixel `pixel`: the handle stays at its
 /// distance from `target` (a light at the target itself is taken at kDirectionalHandle × the
 /// orbit distance), on the side nearer where it was; a pointer beyond the sphere's outline puts
-/// it on the outline. w is kept: a point light stays a point, a directional one keeps |xyz|.
+/// it on the outline, on the pointer's side. w is kept: a point light stays a point, a directional one keeps |xyz|.
 glm::dvec4 dragLight(const Camera& camera, const glm::dvec4& light, const glm::dvec3& target,
                      double orbitDistance, glm::dvec2 pixel);
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -65,7 +66,7 @@ inline bool logSliderDouble(const char* label, double& v, double min, double max
         changed = true;
     }
     ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
-    ImGui::TextUnformatted(label, ImGui::FindRenderedTextEnd(label));
+    ImGui::TextUnformatted(label, std::strstr(label, "##"));  // the visible part
     ImGui::PopID();
     return changed;
 }

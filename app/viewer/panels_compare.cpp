@@ -23,9 +23,10 @@ void sidePicker(const char* label, InterpSpec& spec) {
     int index = nameIndex(names, toString(spec.interp));
     if (comboNames(label, names, index))
         spec.interp = parseInterp(names[static_cast<std::size_t>(index)]).value_or(spec.interp);
-    if (spec.interp == Interp::Subdivided)
-        ImGui::SliderInt("N", &spec.subdivision, kMinSubdivision, kMaxSubdivision, "%d",
-                         ImGuiSliderFlags_Logarithmic);
+    ImGui::BeginDisabled(spec.interp != Interp::Subdivided);  // kept: the rows stay put
+    ImGui::SliderInt("N", &spec.subdivision, kMinSubdivision, kMaxSubdivision, "%d",
+                     ImGuiSliderFlags_Logarithmic);
+    ImGui::EndDisabled();
     ImGui::PopID();
 }
 
@@ -69,8 +70,9 @@ void colourBar(App& app) {
         const ImU32 fill =
             IM_COL32(static_cast<int>(col.r * 255.0 + 0.5), static_cast<int>(col.g * 255.0 + 0.5),
                      static_cast<int>(col.b * 255.0 + 0.5), 255);
-        draw->AddRectFilled(ImVec2(x0 + w * i / kSteps, y0),
-                            ImVec2(x0 + w * (i + 1) / kSteps, y0 + h), fill);
+        const float step = w / static_cast<float>(kSteps);
+        draw->AddRectFilled(ImVec2(x0 + step * static_cast<float>(i), y0),
+                            ImVec2(x0 + step * static_cast<float>(i + 1), y0 + h), fill);
     }
     draw->AddRect(ImVec2(x0, y0), ImVec2(x0 + w, y0 + h), IM_COL32(255, 255, 255, 200));
     const ImU32 text = IM_COL32(255, 255, 255, 255);

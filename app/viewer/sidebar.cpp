@@ -157,7 +157,7 @@ void noticeOverlay(App& app) {
     if (n.text.empty() || std::chrono::steady_clock::now() >= n.until) return;
     const Rect& image = app.work.layout.image;
     const float margin = 12.0f * app.work.scale;
-    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x) + 0.5f * image.w,
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x) + 0.5f * static_cast<float>(image.w),
                                    static_cast<float>(image.y + image.h) - margin),
                             ImGuiCond_Always, ImVec2(0.5f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.85f);
@@ -171,9 +171,10 @@ void noticeOverlay(App& app) {
 /// Every key and mouse action, from the key map (the same table the keys dispatch through).
 void helpOverlay(App& app) {
     const Rect& image = app.work.layout.image;
-    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x) + 0.5f * image.w,
-                                   static_cast<float>(image.y) + 0.5f * image.h),
-                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowPos(
+        ImVec2(static_cast<float>(image.x) + 0.5f * static_cast<float>(image.w),
+               static_cast<float>(image.y) + 0.5f * static_cast<float>(image.h)),
+        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.96f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;

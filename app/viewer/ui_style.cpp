@@ -42,7 +42,8 @@ float windowUiScale(const App& app) {
     int ww = 0, wh = 0, fw = 0, fh = 0;
     glfwGetWindowSize(app.window, &ww, &wh);
     glfwGetFramebufferSize(app.window, &fw, &fh);
-    const float framebufferScale = ww > 0 && fw > 0 ? static_cast<float>(fw) / ww : 1.0f;
+    const float framebufferScale =
+        ww > 0 && fw > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
     const float scale = std::max(sx, sy) / std::max(framebufferScale, 1e-3f);
     return std::clamp(std::isfinite(scale) ? scale : 1.0f, 0.5f, 4.0f);
 }

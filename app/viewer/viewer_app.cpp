@@ -261,7 +261,8 @@ int App::run() {
                           (options.frames > 0 && frameCount + 1 >= options.frames);
         if (work.scaleChanged && options.uiScale <= 0.0) {  // moved to another monitor
             const float scale = windowUiScale(*this);
-            work.sidebarWidth = static_cast<int>(work.sidebarWidth * scale / work.scale + 0.5f);
+            work.sidebarWidth =
+                static_cast<int>(static_cast<float>(work.sidebarWidth) * scale / work.scale + 0.5f);
             work.sidebarSizeSet = true;
             work.scale = scale;
             applyUiStyle(scale, true);

@@ -42,10 +42,14 @@ std::string workspaceStateText(const App& app) {
     const LightMarker m = lightMarker(app.model.scene.camera, lightPosition(app),
                                       app.model.orbit.target, app.model.orbit.distance);
     const Camera& c = app.model.scene.camera;
+    // Shown or not, where it is drawn (window pixels), and whether that is its projection (1)
+    // or a place on the frame's border (0).
+    const glm::dvec2 at = lightMarkerPlace(app);
     char marker[160];
-    std::snprintf(marker, sizeof marker, "%d %.3f %.3f", lightMarkerShown(app) && m.visible ? 1 : 0,
-                  app.view.x + m.pixel.x * app.view.w / std::max(1, c.width),
-                  app.view.y + m.pixel.y * app.view.h / std::max(1, c.height));
+    std::snprintf(marker, sizeof marker, "%d %.3f %.3f %d", lightMarkerShown(app) ? 1 : 0,
+                  app.view.x + at.x * app.view.w / std::max(1, c.width),
+                  app.view.y + at.y * app.view.h / std::max(1, c.height),
+                  markerInFrame(m, c.width, c.height) ? 1 : 0);
     s << "light_marker " << marker << "\n";
     return s.str();
 }

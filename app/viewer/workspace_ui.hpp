@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "key_map.hpp"
@@ -76,6 +77,10 @@ void dragLightStep(App& app);
 
 /// Draws the light's marker over the frame.
 void drawLightMarker(App& app);
+
+/// Where the light's marker is drawn, in frame pixels (its projection, or on the frame's border
+/// when the light is off-screen).
+glm::dvec2 lightMarkerPlace(const App& app);
 
 /// Whether the marker shows: turned on and lighting on.
 bool lightMarkerShown(const App& app);
