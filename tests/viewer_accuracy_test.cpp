@@ -230,6 +230,7 @@ TEST(AccuracyJob, TheTruthIsFinerThanEveryMethodInTheTable) {
     ASSERT_TRUE(report);
     EXPECT_EQ(report->rows.size(), all.size() - 1);
     EXPECT_EQ(report->leftOut, "4x4");
+    EXPECT_NE(accuracyStateText(report.get()).find("accuracy_left_out 4x4\n"), std::string::npos);
     for (const AccuracyRow& r : report->rows) {
         EXPECT_NE(r.method, "4x4");
         EXPECT_GT(r.error.rmse, 0.0) << r.method << ": measured against itself?";

@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +50,7 @@ TEST(Workspace, SideBarAndFrameNeverOverlapAtAnySize) {
                     for (const auto& [fw, fh] : {std::pair{512, 512}, {800, 600}, {1920, 1080}}) {
                         const Rect f = frameRect(ws, fw, fh);
                         EXPECT_TRUE(inside(f, ws.image)) << w << "x" << h << " " << fw;
+                        ASSERT_GT(f.w, 0) << "the frame never vanishes";
                         EXPECT_FALSE(overlaps(f, ws.sidebar));
                         // The aspect is the frame's, to the rounding of one pixel.
                         EXPECT_NEAR(static_cast<double>(f.w) / f.h, static_cast<double>(fw) / fh,
@@ -71,6 +75,8 @@ TEST(Workspace, TheSideBarWidthIsClampedAndScaled) {
     EXPECT_EQ(hidden.sidebar.w, 0);
     EXPECT_EQ(hidden.image.w, 1280);
     EXPECT_EQ(workspaceLayout(0, 720, 380, SidebarState::Open, 1.0).image.w, 0);
+    // A window narrower than the side bar's least width: the image keeps its 30 %.
+    EXPECT_EQ(workspaceLayout(200, 300, 380, SidebarState::Open, 1.0).image.w, 60);
 }
 
 TEST(Workspace, TheWindowOpensWithTheSceneBesideTheSideBar) {
@@ -121,7 +127,9 @@ TEST(KeyMap, EveryKeyInTheHelpDispatchesToItsAction) {
         EXPECT_TRUE(seen.insert(k.action).second) << "twice in the table: " << k.keys;
         EXPECT_TRUE(!k.chars.empty() || k.named) << k.keys << " has no key";
         for (const char c : k.chars) EXPECT_EQ(actionForChar(static_cast<unsigned>(c)), k.action);
-        if (k.named) EXPECT_EQ(actionForKey(*k.named), k.action);
+        if (k.named) {
+            EXPECT_EQ(actionForKey(*k.named), k.action);
+        }
         EXPECT_EQ(keysFor(k.action), k.keys);
     }
     EXPECT_EQ(actionForKey(NamedKey::F1), Action::Help);

@@ -107,6 +107,7 @@ std::string accuracyStateText(const AccuracyReport* report) {
     s << "accuracy_rows " << report->rows.size() << "\n";
     s << "accuracy_samples " << report->samples << "\n";
     s << "accuracy_size " << report->width << " " << report->height << "\n";
+    s << "accuracy_left_out " << report->leftOut << "\n";
     for (const AccuracyRow& r : report->rows) {
         char buf[256];
         std::snprintf(buf, sizeof buf, "accuracy_%s_%s %.4f %.4f %.3f %.1f %.5f %d\n",

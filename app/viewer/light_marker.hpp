@@ -44,7 +44,8 @@ LightMarker lightMarker(const Camera& camera, const glm::dvec4& light, const glm
 /// The light moved so that its marker sits under frame pixel `pixel`: the handle stays at its
 /// distance from `target` (a light at the target itself is taken at kDirectionalHandle × the
 /// orbit distance), on the side nearer where it was; a pointer beyond the sphere's outline puts
-/// it on the outline, on the pointer's side. w is kept: a point light stays a point, a directional one keeps |xyz|.
+/// it on the outline, on the pointer's side. w is kept: a point light stays a point, a directional
+/// one keeps |xyz|.
 glm::dvec4 dragLight(const Camera& camera, const glm::dvec4& light, const glm::dvec3& target,
                      double orbitDistance, glm::dvec2 pixel);
 

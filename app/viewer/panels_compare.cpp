@@ -127,7 +127,7 @@ void comparePanel(App& app) {
                                       : 0.0;
         ImGui::Text("mean error %.3f, max %d (8-bit steps)", d.meanError, d.maxError);
         ImGui::Text("differing: %zu of %zu pixels (%.2f%%)", d.pixelsDiffering, d.pixels, share);
-        ImGui::TextDisabled("over the pixels either side covers (not the background)");
+        ImGui::TextDisabled("over the covered pixels (background left out)");
     }
     accuracySection(app);
 }

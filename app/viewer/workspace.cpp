@@ -15,7 +15,7 @@ int scaled(int pixels, double scale) {
 int clampSidebarWidth(int width, int windowWidth, double scale) {
     const int least = scaled(kSidebarMinWidth, scale);
     const int most = static_cast<int>(windowWidth * (1.0 - kMinImageShare));
-    return std::max(least, std::min(width, most));
+    return std::max(0, std::min(most, std::max(least, width)));
 }
 
 Workspace workspaceLayout(int windowWidth, int windowHeight, int sidebarWidth, SidebarState state,

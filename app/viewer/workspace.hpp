@@ -29,7 +29,8 @@ struct Workspace {
 };
 
 /// The side bar's width as it can be: at least kSidebarMinWidth·scale, and leaving at least
-/// kMinImageShare of the window to the image (the minimum wins in a tiny window).
+/// kMinImageShare of the window to the image (the image's share wins in a tiny window: the
+/// frame never disappears).
 int clampSidebarWidth(int width, int windowWidth, double scale);
 
 /// Side bar at the left, `sidebarWidth` wide when open (clamped by clampSidebarWidth), the
