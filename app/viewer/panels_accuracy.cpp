@@ -124,6 +124,7 @@ void accuracyWindow(App& app) {
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
     if (ImGui::Begin("Against the ground truth", &app.work.accuracyTable, flags)) {
+        noteWindow(app, "table");
         ImGui::Text("%dx%d, ground truth %dx%d samples per pixel (%.1f s), median of %d frames",
                     report->width, report->height, report->samples, report->samples,
                     report->groundTruthSeconds, report->frames);

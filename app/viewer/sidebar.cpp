@@ -26,14 +26,6 @@ SidebarState sidebarState(const App& app) {
     return app.work.collapsed ? SidebarState::Collapsed : SidebarState::Open;
 }
 
-/// Remembers where a window went this frame (inside its Begin/End).
-void noteWindow(App& app, const char* name) {
-    const ImVec2 p = ImGui::GetWindowPos();
-    const ImVec2 s = ImGui::GetWindowSize();
-    app.work.drawn[name] = {static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(s.x),
-                            static_cast<int>(s.y)};
-}
-
 /// The title row: the scene's name, help and collapse buttons; then the view toggles.
 void sidebarHeader(App& app) {
     WorkspaceUi& w = app.work;
@@ -213,6 +205,13 @@ void helpOverlay(App& app) {
 }
 
 }  // namespace
+
+void noteWindow(App& app, const char* name) {
+    const ImVec2 p = ImGui::GetWindowPos();
+    const ImVec2 s = ImGui::GetWindowSize();
+    app.work.drawn[name] = {static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(s.x),
+                            static_cast<int>(s.y)};
+}
 
 void placeFrame(App& app) {
     WorkspaceUi& w = app.work;

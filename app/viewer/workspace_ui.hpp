@@ -61,6 +61,10 @@ struct WorkspaceUi {
 /// area and places the frame in it (App::view). Called before and after the panels.
 void placeFrame(App& app);
 
+/// Remembers where the current ImGui window went this frame (call inside its Begin/End), for
+/// the --state file.
+void noteWindow(App& app, const char* name);
+
 /// Side bar (or its collapsed strip), the overlays (stats, help, notice, light marker, Compare
 /// labels and colour bar), the ground-truth table's window and the error popup.
 void drawPanels(App& app);
