@@ -41,41 +41,40 @@ void sideLabels(const App& app, std::string& left, std::string& right) {
     }
 }
 
-/// The heat map's scale: a viridis bar from 1 step to the brightest error, with its numbers, and
-/// the mean over the covered pixels; at the bottom right of the frame.
+/// The heat map's scale: a viridis bar from 0 to the brightest error with its numbers, at the
+/// top left of the frame (the stats box has the top right, the labels the bottom).
 void colourBar(App& app) {
     const CompareView& c = app.compare;
     const Rect& v = app.view;
     const float s = app.work.scale;
     const int top = heatTop(c.heatScale, c.diff.maxError);
-    const float w = std::min(220.0f * s, 0.45f * static_cast<float>(v.w));
+    const char* caption = "error, 8-bit steps";
+    const char* note = c.heatScale ? "black: equal; top: heat scale" : "black: equal; top: max";
+    const float w =
+        std::min(std::max(160.0f * s, ImGui::CalcTextSize(note).x), 0.6f * static_cast<float>(v.w));
     const float h = 12.0f * s;
     const float pad = 6.0f * s;
     const float line = ImGui::GetTextLineHeight();
-    const float x0 = static_cast<float>(v.x + v.w) - w - 3.0f * pad;
-    const float y0 = static_cast<float>(v.y + v.h) - h - 2.0f * line - 4.0f * pad;
+    const float x0 = static_cast<float>(v.x) + 2.0f * pad;
+    const float y0 = static_cast<float>(v.y) + 2.0f * pad + line;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     draw->AddRectFilled(ImVec2(x0 - pad, y0 - pad - line),
                         ImVec2(x0 + w + pad, y0 + h + 2.0f * line + 2.0f * pad),
                         IM_COL32(0, 0, 0, 190));
-    char caption[96];
-    std::snprintf(caption, sizeof caption, "error, 8-bit steps (mean %.2f covered)",
-                  c.diff.meanError);
-    draw->AddText(ImVec2(x0, y0 - line - 2.0f), IM_COL32(255, 255, 255, 255), caption);
+    const ImU32 text = IM_COL32(255, 255, 255, 255);
+    draw->AddText(ImVec2(x0, y0 - line - 2.0f), text, caption);
     constexpr int kSteps = 48;
+    const float step = w / static_cast<float>(kSteps);
     for (int i = 0; i < kSteps; ++i) {
         // Step i shows the error at its middle, from just above 0 to `top`.
-        const double e = top * (i + 0.5) / kSteps;
-        const glm::dvec3 col = heatColour(e, top);
+        const glm::dvec3 col = heatColour(top * (i + 0.5) / kSteps, top);
         const ImU32 fill =
             IM_COL32(static_cast<int>(col.r * 255.0 + 0.5), static_cast<int>(col.g * 255.0 + 0.5),
                      static_cast<int>(col.b * 255.0 + 0.5), 255);
-        const float step = w / static_cast<float>(kSteps);
         draw->AddRectFilled(ImVec2(x0 + step * static_cast<float>(i), y0),
                             ImVec2(x0 + step * static_cast<float>(i + 1), y0 + h), fill);
     }
     draw->AddRect(ImVec2(x0, y0), ImVec2(x0 + w, y0 + h), IM_COL32(255, 255, 255, 200));
-    const ImU32 text = IM_COL32(255, 255, 255, 255);
     auto tick = [&](double value, float fx, float anchor) {
         char num[16];
         std::snprintf(num, sizeof num, "%g", value);
@@ -87,9 +86,7 @@ void colourBar(App& app) {
     tick(0, 0.0f, 0.0f);
     tick(0.5 * top, 0.5f, 0.5f);
     tick(top, 1.0f, 1.0f);
-    draw->AddText(ImVec2(x0, y0 + h + line + 4.0f * s), IM_COL32(200, 200, 200, 255),
-                  c.heatScale ? "black: equal; brightest at the heat scale"
-                              : "black: equal; brightest: the largest error");
+    draw->AddText(ImVec2(x0, y0 + h + line + 4.0f * s), IM_COL32(200, 200, 200, 255), note);
 }
 
 }  // namespace
@@ -153,8 +150,7 @@ void compareOverlay(App& app) {
     std::string left, right;
     sideLabels(app, left, right);
     if (c.display == CompareDisplay::Difference) {
-        label(static_cast<float>(v.x + 8), y,
-              "difference " + left + " vs " + right + " (black: equal)");
+        label(static_cast<float>(v.x + 8), y, "difference " + left + " vs " + right);
         colourBar(app);
         return;
     }
