@@ -117,18 +117,20 @@ TEST_P(OpeningLayout, NoPanelPixelCoversTheFrame) {
               0.3);
 }
 
+/// "course/example0.scene" → "example0" (a function: gtest's lambda form warns under -Wshadow).
+std::string sceneName(const ::testing::TestParamInfo<const char*>& param) {
+    std::string n = param.param;
+    n = n.substr(n.find('/') + 1);
+    return n.substr(0, n.find('.'));
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Scenes, OpeningLayout,
     ::testing::Values("default", "course/example0.scene", "course/example1.scene",
                       "course/example2.scene", "course/example_textured.scene",
                       "scenes/bunny_1280x720.scene", "scenes/bunny_1920x1080.scene",
                       "scenes/spot_1280x720.scene", "scenes/spot_1920x1080.scene"),
-    [](const auto& info) {
-        std::string n = info.param;
-        n = n.substr(n.find('/') + 1);
-        n = n.substr(0, n.find('.'));
-        return n;
-    });
+    sceneName);
 
 // ---------------------------------------------------------------------------------------------
 // Keys.
@@ -202,6 +204,16 @@ TEST_F(ViewerGui, FFramesTheModelAndHomeGoesBack) {
     const Outcome home = driveSteps("drag 1 800 400 150 40 5; key f; key Home", "--size 800x600");
     ASSERT_EQ(home.exitCode, 0) << home.out;
     EXPECT_EQ(readState(path("state.txt")).at("moved"), "0");
+}
+
+TEST_F(ViewerGui, F11GoesFullscreenAndTheFrameFollows) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = driveSteps("at 500 300; key F11; pause 1", "--size 800x600");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("fullscreen"), "1");
+    EXPECT_EQ(state.at("window"), "1920 1080");
+    EXPECT_EQ(state.at("view"), "380 0 1540 1080");
 }
 
 TEST_F(ViewerGui, NumberKeysSwitchDrawModeAndShader) {

@@ -97,12 +97,12 @@ void comparePanel(App& app) {
     bool on = c.enabled;
     if (ImGui::Checkbox("compare two interpolations", &on))
         setCompare(on, app.model.rendererChoice, c);
-    if (sideBySide) {
-        ImGui::TextDisabled("left: CPU engine, right: OpenGL twin");
-    } else {
-        sidePicker("left", c.left);
-        sidePicker("right", c.right);
-    }
+    // Side by side, the two sides are the renderers (labelled on the image): the pickers stay,
+    // greyed out, so the rows below do not move.
+    ImGui::BeginDisabled(sideBySide);
+    sidePicker("left", c.left);
+    sidePicker("right", c.right);
+    ImGui::EndDisabled();
     int display = c.display == CompareDisplay::Split ? 0 : 1;
     ImGui::RadioButton("split", &display, 0);
     ImGui::SameLine();
