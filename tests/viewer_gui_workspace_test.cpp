@@ -206,6 +206,24 @@ TEST_F(ViewerGui, FFramesTheModelAndHomeGoesBack) {
     EXPECT_EQ(readState(path("state.txt")).at("moved"), "0");
 }
 
+TEST_F(ViewerGui, TheSideBarResizesAndCollapsesAndTheFrameMakesRoom) {
+    REQUIRE_XDOTOOL();
+    // Its right edge dragged 120 pixels right.
+    Outcome r = driveSteps("drag 1 379 300 120 0 6", "--size 1000x500");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("window_sidebar"), "0 0 500 500");
+    EXPECT_EQ(state.at("view"), "500 0 500 500");
+    // "<<" at the title row's right end: a strip, the frame beside it.
+    r = driveSteps("at 348 18; click 1", "--size 1000x500");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("sidebar"), "collapsed");
+    const Rect strip = rectOf(state, "window_sidebar");
+    EXPECT_EQ(strip.w, facet::view::kSidebarCollapsedWidth);
+    EXPECT_EQ(rectOf(state, "view").x, strip.w);
+}
+
 TEST_F(ViewerGui, F11GoesFullscreenAndTheFrameFollows) {
     REQUIRE_XDOTOOL();
     const Outcome r = driveSteps("at 500 300; key F11; pause 1", "--size 800x600");

@@ -18,7 +18,7 @@ enum class SidebarState {
 /// Side bar widths at a UI scale of 1 (multiplied by the monitor's content scale).
 inline constexpr int kSidebarWidth = 380;
 inline constexpr int kSidebarMinWidth = 260;
-inline constexpr int kSidebarCollapsedWidth = 26;
+inline constexpr int kSidebarCollapsedWidth = 32;  // ImGui's least window width
 /// The image area never gets narrower than this share of the window when the bar is dragged.
 inline constexpr double kMinImageShare = 0.3;
 
