@@ -10,7 +10,7 @@ pkgs=(build-essential cmake pkg-config
   clang libclang-rt-14-dev libomp-dev  # make test-clang and make fuzz (libFuzzer, sanitizers, OpenMP)
   libhwy-dev  # Google Highway: the span loop's SIMD, SSE4/AVX2/AVX-512 chosen at run time
   libegl1 libegl-mesa0 libgbm1  # the OpenGL twin: EGL's surfaceless platform on Mesa (llvmpipe)
-  xvfb xauth xdotool  # the viewer's tests: a virtual display and real input events
+  xvfb xauth xdotool x11-utils  # the viewer's tests: a virtual display, real input events, xprop
   gnuplot-nox)  # facet bench --chart
 # Extra packages named on the command line (e.g. doxygen for make doc).
 pkgs+=("$@")

@@ -170,7 +170,8 @@ TEST(AccuracyMethods, AroundTheUserSettingsKeepTheirShaderAndCombine) {
 TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     const Scene scene = tiltedQuad(96, 64);
     AccuracyJob job;
-    ASSERT_TRUE(job.start(scene, 7, textured(), 4, 2, 1));
+    // An 8x8 truth: finer than every method, 4x4 supersampling included.
+    ASSERT_TRUE(job.start(scene, 7, textured(), 8, 2, 1));
     EXPECT_TRUE(job.running());
     job.wait();
     EXPECT_FALSE(job.running());
@@ -182,8 +183,9 @@ TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     ASSERT_TRUE(report);
     EXPECT_EQ(report->width, 96);
     EXPECT_EQ(report->height, 64);
-    EXPECT_EQ(report->samples, 4);
+    EXPECT_EQ(report->samples, 8);
     EXPECT_EQ(report->frames, 2);
+    EXPECT_EQ(report->leftOut, "");
     EXPECT_GT(report->groundTruthSeconds, 0.0);
     ASSERT_EQ(report->rows.size(), 11u);
     for (const char* m : {"affine", "subdivided:8", "subdivided:16", "subdivided:32", "perspective",
@@ -208,6 +210,35 @@ TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     // Supersampling removes the silhouette aliasing every one-sample method shares.
     EXPECT_LT(row(*report, "4x4").error.rmse, row(*report, "1x1").error.rmse);
     EXPECT_NE(state.find("accuracy_interp_perspective "), std::string::npos) << state;
+}
+
+TEST(AccuracyJob, TheTruthIsFinerThanEveryMethodInTheTable) {
+    const Scene scene = tiltedQuad(64, 48);
+    const std::vector<app::AccuracyMethod> all = app::accuracyMethods(scene, textured());
+    std::string leftOut;
+    std::vector<app::AccuracyMethod> kept = methodsBelowTruth(all, 4, &leftOut);
+    EXPECT_EQ(kept.size(), all.size() - 1);
+    EXPECT_EQ(leftOut, "4x4");
+    for (const app::AccuracyMethod& m : kept) EXPECT_LT(m.settings.supersample, 4) << m.name;
+    kept = methodsBelowTruth(all, 2, &leftOut);
+    EXPECT_EQ(leftOut, "2x2, 4x4");
+    EXPECT_EQ(methodsBelowTruth(all, 8, &leftOut).size(), all.size());
+    EXPECT_EQ(leftOut, "");
+
+    // A 4x4 truth measures no 4x4 method: the row that was "best" against itself is gone, and
+    // the Pareto front is computed without it.
+    AccuracyJob job;
+    ASSERT_TRUE(job.start(scene, 3, textured(), 4, 1, 0));
+    job.wait();
+    const std::shared_ptr<const AccuracyReport> report = job.report();
+    ASSERT_TRUE(report);
+    EXPECT_EQ(report->rows.size(), all.size() - 1);
+    EXPECT_EQ(report->leftOut, "4x4");
+    EXPECT_NE(accuracyStateText(report.get()).find("accuracy_left_out 4x4\n"), std::string::npos);
+    for (const AccuracyRow& r : report->rows) {
+        EXPECT_NE(r.method, "4x4");
+        EXPECT_GT(r.error.rmse, 0.0) << r.method << ": measured against itself?";
+    }
 }
 
 TEST(AccuracyJob, CancelStopsItQuicklyAndLeavesNoResult) {

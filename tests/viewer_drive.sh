@@ -8,7 +8,7 @@
 # to do with the window (all coordinates relative to it), then Escape closes it:
 #   none    nothing
 #   orbit   left drag across the image, then three wheel turns towards the scene
-#   panel   left drag that starts on the title bar of the "facet" panel
+#   panel   left drag that starts on the side bar's title row
 #   pan     right drag across the image
 #   divider left drag from the middle of the window to x = 900 (the Compare divider)
 #   resize  resize the window to 800x600
@@ -17,6 +17,10 @@
 #           CPU engine → OpenGL twin
 #   combo   open the Render panel's renderer combo and click its second entry (OpenGL twin)
 #   save    left drag across the image (orbit), then Ctrl+S (Save scene to the Scene panel's path)
+#   steps   run $FACET_DRIVE_STEPS, ';'-separated commands of this script: drag B X Y DX DY N,
+#           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, pause SECONDS
+# With FACET_DRIVE_QUIT=term the viewer is stopped with SIGTERM instead of Escape (so a last
+# --window-shot still shows what Escape would close, the help for one).
 set -u
 scenario=$1
 out=$2
@@ -53,6 +57,16 @@ drag() {  # button x0 y0 dx dy steps
   sleep 0.3
 }
 
+ctrldrag() {  # x0 y0 dx dy steps, left button with Ctrl held
+  xdotool keydown ctrl
+  drag 1 "$@"
+  xdotool keyup ctrl
+}
+at() { xdotool mousemove --window "$wid" "$1" "$2"; sleep 0.1; }
+key() { xdotool key "$@"; sleep 0.4; }
+click() { xdotool click "$1"; sleep 0.3; }
+pause() { sleep "$1"; }
+
 case "$scenario" in
   none) ;;
   save)
@@ -67,7 +81,7 @@ case "$scenario" in
     ;;
   panel) drag 1 120 19 160 120 6 ;;
   pan) drag 3 800 450 100 50 5 ;;
-  divider) drag 1 640 450 260 0 5 ;;
+  divider) drag 1 1020 450 260 0 5 ;;
   resize) xdotool windowsize "$wid" 800 600; sleep 1 ;;
   key) xdotool mousemove --window "$wid" 800 450; sleep 0.2; xdotool key p; sleep 0.5 ;;
   renderers)
@@ -76,17 +90,22 @@ case "$scenario" in
     sleep 1
     ;;
   combo)
-    # The combo is the Render panel's first row, open at start (panel at 10,10; 360 wide).
-    xdotool mousemove --window "$wid" 110 92 click 1
+    # The combo is the Render panel's first row, open at start (the side bar at the left).
+    xdotool mousemove --window "$wid" 110 114 click 1
     sleep 0.5
-    xdotool mousemove --window "$wid" 110 133 click 1
+    xdotool mousemove --window "$wid" 110 155 click 1
     sleep 1
     ;;
+  steps) eval "${FACET_DRIVE_STEPS:-}" ;;
   *) echo "viewer_drive: unknown scenario $scenario" >&2 ;;
 esac
 
 sleep 0.5
-xdotool mousemove --window "$wid" 800 450 key Escape
+if [ "${FACET_DRIVE_QUIT:-}" = term ]; then
+  kill -TERM "$pid"
+else
+  xdotool mousemove --window "$wid" 800 450 key Escape
+fi
 # Escape should end it within a second; SIGTERM also makes it write its outputs.
 i=0
 while kill -0 "$pid" 2>/dev/null && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done

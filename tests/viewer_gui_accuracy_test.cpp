@@ -17,9 +17,10 @@ namespace {
 using namespace facet;
 using namespace viewer_gui;
 
-// Starts the viewer in the Compare panel (so the layout is fixed: Measure at (67, 374) of the
-// window), clicks Measure, waits up to 40 s for "accuracy measured" on its stdout, clicks the
-// table's fourth row (subdivided:16), then closes it with Escape.
+// Starts the viewer in the Compare panel (so the layout is fixed: Measure at (57, 458) of the
+// window, in the side bar), clicks Measure, waits up to 40 s for "accuracy measured" on its
+// stdout, clicks the table's third row (subdivided:16) in the table's own window at the image
+// area's bottom left, then closes it with Escape.
 const char* const kScript = R"(set -u
 cd "$1" || exit 1
 shift
@@ -33,11 +34,11 @@ if [ -z "$wid" ]; then
   exit 1
 fi
 sleep 1
-xdotool mousemove --window "$wid" 67 374 click 1
+xdotool mousemove --window "$wid" 57 458 click 1
 i=0
 while ! grep -q "accuracy measured" viewer.log && [ "$i" -lt 400 ]; do sleep 0.1; i=$((i + 1)); done
 sleep 0.5
-xdotool mousemove --window "$wid" 150 464 click 1
+xdotool mousemove --window "$wid" 508 519 click 1
 sleep 0.5
 xdotool mousemove --window "$wid" 900 450 key Escape
 i=0
@@ -55,20 +56,23 @@ TEST_F(ViewerGui, MeasuringAgainstTheGroundTruthFillsTheTableAndARowPicksTheMeth
         std::ofstream script(path("measure.sh"));
         script << kScript;
     }
-    const Outcome r = run("timeout 90 " + kXvfb + "sh " + path("measure.sh") + " " + dir.string() +
-                          " " + kViewer + " --compare --size 1280x720 --no-vsync --lighting phong");
+    const Outcome r =
+        run("timeout 90 " + kXvfb + "sh " + path("measure.sh") + " " + dir.string() + " " +
+            kViewer + " --compare --size " + kWindow1280 + " --no-vsync --lighting phong");
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find("accuracy measured, 10 methods at 1280x720, ground truth 4x4 samples"),
+    EXPECT_NE(r.out.find("accuracy measured, 9 methods at 1280x720, ground truth 4x4 samples"),
               std::string::npos)
         << r.out;
 
-    // Painter with Phong on the default knot: five interpolations and two lightings, measured
-    // for the window's frame; perspective and Phong are the exact forms, so never worse than
-    // subdivided or Gouraud.
+    // Painter with Phong on the default knot: five interpolations, two lightings and 1x1, 2x2
+    // samples (4x4 left out: not coarser than the 4x4 truth), measured for the window's frame;
+    // perspective and Phong are the exact forms, so never worse than subdivided or Gouraud.
     const auto state = readState(path("state.txt"));
     ASSERT_EQ(state.count("accuracy_rows"), 1u);
-    EXPECT_EQ(state.at("accuracy_rows"), "10");
+    EXPECT_EQ(state.at("accuracy_rows"), "9");
     EXPECT_EQ(state.at("accuracy_samples"), "4");
+    EXPECT_EQ(state.at("accuracy_left_out"), "4x4");
+    EXPECT_EQ(state.count("accuracy_samples_4x4"), 0u);
     EXPECT_EQ(state.at("accuracy_size"), "1280 720");
     auto rmse = [&](const std::string& key) {  // "ms rmse psnr max over2 pareto"
         std::istringstream in(state.at(key));
@@ -85,13 +89,18 @@ TEST_F(ViewerGui, MeasuringAgainstTheGroundTruthFillsTheTableAndARowPicksTheMeth
     EXPECT_EQ(state.at("interp"), "subdivided");
     EXPECT_EQ(state.at("lighting"), "phong");
 
-    // The panel widened to hold the table: right of its usual 360 pixels, the table's rows
-    // cover the frame.
+    // The table has a window of its own over the image (the side bar keeps its width).
     const Framebuffer window = readPng(path("window.png"));
     const Framebuffer frame = readPng(path("frame.png"));
-    ASSERT_EQ(window.width, 1280);
+    ASSERT_EQ(window.width, 1660);
     ASSERT_EQ(frame.width, 1280);
-    EXPECT_GT(differingShare(window, frame, 375, 420, 515, 540), 0.5);
+    EXPECT_EQ(state.at("window_sidebar"), "0 0 380 720");
+    const facet::view::Rect table = rectOf(state, "window_table");
+    ASSERT_GT(table.w, 300);
+    EXPECT_GE(table.x, kFrameX);
+    EXPECT_GT(differingShareAt(window, frame, kFrameX, table.x - kFrameX + 10, table.y + 30,
+                               table.x - kFrameX + table.w - 10, table.y + table.h - 10),
+              0.5);
 }
 
 }  // namespace

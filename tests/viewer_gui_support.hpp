@@ -22,6 +22,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/texture.hpp"
 #include "state_file.hpp"
+#include "workspace.hpp"
 
 namespace viewer_gui {
 
@@ -31,6 +32,12 @@ inline const std::string kViewer = FACET_VIEWER;
 inline const std::string kDriver = FACET_VIEWER_DRIVER;
 inline const std::string kScene = std::string(FACET_ASSETS_DIR) + "/default.scene";
 inline const std::string kXvfb = "xvfb-run -a -s '-screen 0 1920x1080x24' ";
+
+// The side bar takes the window's left 380 pixels (UI scale 1, as under Xvfb): a window of
+// 1660x720 shows a 1280x720 frame at x = 380, the default scene's own size.
+static_assert(facet::view::kSidebarWidth == 380, "the window sizes below assume it");
+inline constexpr int kFrameX = facet::view::kSidebarWidth;
+inline const std::string kWindow1280 = "1660x720";
 
 struct Outcome {
     int exitCode = -1;
@@ -85,6 +92,29 @@ inline double differingShare(const facet::Framebuffer& a, const facet::Framebuff
     return n ? static_cast<double>(differ) / static_cast<double>(n) : 0.0;
 }
 
+/// Share of the frame's pixels in [x0, x1) × [y0, y1) that differ from the window's pixels
+/// `dx` further right (the frame shown beside the side bar).
+inline double differingShareAt(const facet::Framebuffer& window, const facet::Framebuffer& frame,
+                               int dx, int x0, int y0, int x1, int y1) {
+    std::size_t n = 0, differ = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++n)
+            differ += facet::pixelError(window.color[window.index(x + dx, y)],
+                                        frame.color[frame.index(x, y)]) > 0;
+    return n ? static_cast<double>(differ) / static_cast<double>(n) : 0.0;
+}
+
+/// A rectangle "x y w h" from the --state file.
+inline facet::view::Rect rectOf(const std::map<std::string, std::string>& state,
+                                const std::string& key) {
+    facet::view::Rect r;
+    const auto it = state.find(key);
+    if (it == state.end()) return r;
+    std::istringstream in(it->second);
+    in >> r.x >> r.y >> r.w >> r.h;
+    return r;
+}
+
 /// A fresh folder per test, kept when the test failed; the viewer runs in it.
 class ViewerGui : public ::testing::Test {
   protected:
@@ -123,9 +153,20 @@ class ViewerGui : public ::testing::Test {
     }
 
     /// Drives the viewer with xdotool through tests/viewer_drive.sh.
-    Outcome drive(const std::string& scenario, const std::string& args = "--size 1280x720") {
-        return run("env " + configEnv() + " timeout 90 " + kXvfb + "sh " + kDriver + " " +
-                   scenario + " " + dir.string() + " " + kViewer + " --no-vsync " + args);
+    Outcome drive(const std::string& scenario, const std::string& args = "--size " + kWindow1280,
+                  const std::string& env = "") {
+        return run("env " + configEnv() + " " + env + " timeout 90 " + kXvfb + "sh " +
+                   kDriver + " " + scenario + " " + dir.string() + " " + kViewer + " --no-vsync " +
+                   args);
+    }
+
+    /// Drives the viewer through `steps` (viewer_drive.sh's commands, ';'-separated); `term`
+    /// stops it with SIGTERM instead of Escape.
+    Outcome driveSteps(const std::string& steps, const std::string& args, bool term = false,
+                       const std::string& env = "") {
+        return drive("steps", args,
+                     "FACET_DRIVE_STEPS='" + steps + "'" + (term ? " FACET_DRIVE_QUIT=term" : "") +
+                         (env.empty() ? "" : " " + env));
     }
 };
 

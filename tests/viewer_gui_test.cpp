@@ -19,6 +19,7 @@ namespace {
 
 using namespace facet;
 using namespace viewer_gui;
+using facet::view::Rect;
 
 TEST_F(ViewerGui, WithoutADisplayItSaysWhatToDoAndExits2) {
     const Outcome r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + kViewer + " " + kScene);
@@ -46,9 +47,9 @@ TEST_F(ViewerGui, BadInputIsOneLineAndExitCode2) {
 
 TEST_F(ViewerGui, SmokeShowsTheEngineFrameAndThePanels) {
     REQUIRE_XVFB();
-    const Outcome r = viewer(
-        "--frames 5 --size 1280x720 --no-vsync --screenshot frame.png "
-        "--window-shot window.png --state state.txt --fps-report");
+    const Outcome r = viewer("--frames 5 --size " + kWindow1280 +
+                             " --no-vsync --screenshot frame.png "
+                             "--window-shot window.png --state state.txt --fps-report");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_NE(r.out.find("fps"), std::string::npos) << r.out;
 
@@ -61,14 +62,18 @@ TEST_F(ViewerGui, SmokeShowsTheEngineFrameAndThePanels) {
     EXPECT_TRUE(d.sameSize);
     EXPECT_EQ(d.pixelsDiffering, 0u) << "max error " << d.maxError;
 
-    // The window shows that frame texel for texel where no panel covers it...
+    // The window shows that frame texel for texel right of the side bar (below the stats box in
+    // the top right corner)...
     const Framebuffer window = readPng(path("window.png"));
-    ASSERT_EQ(window.width, 1280);
+    ASSERT_EQ(window.width, 1660);
     ASSERT_EQ(window.height, 720);
-    EXPECT_LT(differingShare(window, frame, 400, 300, 940, 720), 0.001);
-    // ...and the panels on top: the "facet" panel at the left, Stats at the top right.
+    const auto shifted = [&](int x0, int y0, int x1, int y1) {
+        return differingShareAt(window, frame, kFrameX, x0, y0, x1, y1);
+    };
+    EXPECT_EQ(shifted(0, 100, 1280, 720), 0.0);
+    // ...the side bar at the left, the stats box in the image's top right corner.
     EXPECT_GT(differingShare(window, frame, 15, 15, 365, 300), 0.5);
-    EXPECT_GT(differingShare(window, frame, 980, 15, 1260, 200), 0.5);
+    EXPECT_GT(shifted(1280 - 150, 12, 1280 - 12, 40), 0.2);
 
     const auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("frames"), "5");
@@ -78,8 +83,8 @@ TEST_F(ViewerGui, SmokeShowsTheEngineFrameAndThePanels) {
 
 TEST_F(ViewerGui, CompareSplitsAffineAndPerspective) {
     REQUIRE_XVFB();
-    const Outcome r =
-        viewer("--compare --frames 3 --size 1280x720 --no-vsync --screenshot compare.png");
+    const Outcome r = viewer("--compare --frames 3 --size " + kWindow1280 +
+                             " --no-vsync --screenshot compare.png");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const Framebuffer shown = readPng(path("compare.png"));
     const Framebuffer affine = cliRender("affine.png", "--interp affine");
@@ -93,19 +98,22 @@ TEST_F(ViewerGui, CompareSplitsAffineAndPerspective) {
 TEST_F(ViewerGui, KeepingTheSceneSizeLetterboxesTheFrame) {
     REQUIRE_XVFB();
     const Outcome r = viewer(
-        "--keep-scene-size --size 640x480 --frames 3 --no-vsync "
+        "--keep-scene-size --size 1020x480 --frames 3 --no-vsync "
         "--window-shot window.png --state state.txt");
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_EQ(readState(path("state.txt")).at("size"), "1280 720");
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("size"), "1280 720");
+    EXPECT_EQ(state.at("view"), "380 60 640 360");
     const Framebuffer window = readPng(path("window.png"));
-    ASSERT_EQ(window.width, 640);
+    ASSERT_EQ(window.width, 1020);
     ASSERT_EQ(window.height, 480);
-    // 1280x720 fits 640x480 as 640x360 with 60-pixel bars above and below.
-    const std::uint32_t bar = window.color[window.index(600, 470)];
+    // 1280x720 fits the 640x480 image area as 640x360 with 60-pixel bars above and below.
+    const int x = kFrameX + 600;
+    const std::uint32_t bar = window.color[window.index(x, 470)];
     EXPECT_EQ(bar & 0xFFFFFFu, 0x141414u);
-    EXPECT_NE(window.color[window.index(600, 400)], bar);  // the frame's background
-    EXPECT_EQ(window.color[window.index(600, 419)], window.color[window.index(600, 400)]);
-    EXPECT_EQ(window.color[window.index(600, 420)], bar);
+    EXPECT_NE(window.color[window.index(x, 400)], bar);  // the frame's background
+    EXPECT_EQ(window.color[window.index(x, 419)], window.color[window.index(x, 400)]);
+    EXPECT_EQ(window.color[window.index(x, 420)], bar);
 }
 
 TEST_F(ViewerGui, DraggingOverTheImageOrbitsAndTheWheelZooms) {
@@ -125,20 +133,18 @@ TEST_F(ViewerGui, DraggingOverTheImageOrbitsAndTheWheelZooms) {
     EXPECT_GT(diffImages(frame, cli).pixelsDiffering, 10000u);
 }
 
-TEST_F(ViewerGui, ADragStartingOnAPanelLeavesTheCameraAlone) {
+TEST_F(ViewerGui, ADragStartingOnThePanelsLeavesTheCameraAlone) {
     REQUIRE_XDOTOOL();
-    const Outcome r = drive("panel", "--size 1280x720 --window-shot window.png");
+    const Outcome r = drive("panel", "--size " + kWindow1280 + " --window-shot window.png");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("moved"), "0");
     EXPECT_EQ(number(state, "yaw"), 0.0);
     const Framebuffer frame = readPng(path("frame.png"));
     EXPECT_EQ(diffImages(frame, cliRender("cli.png")).pixelsDiffering, 0u);
-    // The drag went to the panel instead: it moved by (160, 120), uncovering the frame.
-    const Framebuffer window = readPng(path("window.png"));
-    ASSERT_EQ(window.width, 1280);
-    EXPECT_LT(differingShare(window, frame, 15, 15, 160, 120), 0.01);
-    EXPECT_GT(differingShare(window, frame, 180, 140, 500, 300), 0.5);
+    // The side bar stayed where it is (it does not move), the frame beside it.
+    EXPECT_EQ(state.at("window_sidebar"), "0 0 380 720");
+    EXPECT_EQ(state.at("view"), "380 0 1280 720");
 }
 
 TEST_F(ViewerGui, RightDragPansEyeAndLookTogether) {
@@ -157,11 +163,11 @@ TEST_F(ViewerGui, RightDragPansEyeAndLookTogether) {
 
 TEST_F(ViewerGui, DraggingTheCompareDividerMovesItNotTheCamera) {
     REQUIRE_XDOTOOL();
-    const Outcome r = drive("divider", "--size 1280x720 --compare");
+    const Outcome r = drive("divider", "--size " + kWindow1280 + " --compare");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("moved"), "0");
-    // The white divider column followed the pointer from x = 640 to x = 900.
+    // The white divider column followed the pointer from the frame's x = 640 to x = 900.
     const Framebuffer shown = readPng(path("frame.png"));
     ASSERT_EQ(shown.width, 1280);
     const auto whiteColumn = [&](int x) {
@@ -180,19 +186,27 @@ TEST_F(ViewerGui, TheFrameFollowsAResizedWindowWithTheSameFraming) {
     REQUIRE_XDOTOOL();
     const Outcome r = drive("resize");
     ASSERT_EQ(r.exitCode, 0) << r.out;
+    // 800x600 less the side bar: a 420x600 frame, the same vertical field of view.
     const auto state = readState(path("state.txt"));
-    EXPECT_EQ(state.at("size"), "800 600");
+    EXPECT_EQ(state.at("size"), "420 600");
     EXPECT_NEAR(number(state, "frame_focal"), 1100.0 * 600.0 / 720.0, 1e-9);
     const Framebuffer frame = readPng(path("frame.png"));
-    EXPECT_EQ(frame.width, 800);
+    EXPECT_EQ(frame.width, 420);
     EXPECT_EQ(frame.height, 600);
+    // The stats box followed the window's right edge.
+    const Rect stats = rectOf(state, "window_stats");
+    EXPECT_GT(stats.w, 0);
+    EXPECT_NEAR(stats.x + stats.w, 800 - 8, 1);
 }
 
 TEST_F(ViewerGui, TheScreenshotKeySavesTheFrame) {
     REQUIRE_XDOTOOL();
-    const Outcome r = drive("key");
+    // No pictures folder configured: ~/Pictures/facet, made on demand.
+    const Outcome r =
+        drive("key", "--size " + kWindow1280,
+              "-u XDG_PICTURES_DIR HOME=" + path("home") + " XDG_CONFIG_HOME=" + path("config"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    const Framebuffer shot = readPng(path("facet-frame-0001.png"));
+    const Framebuffer shot = readPng(path("home/Pictures/facet/facet-frame-0001.png"));
     ASSERT_EQ(shot.width, 1280) << r.out;
     EXPECT_EQ(diffImages(shot, readPng(path("frame.png"))).pixelsDiffering, 0u);
 }

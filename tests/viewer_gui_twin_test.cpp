@@ -83,7 +83,7 @@ std::string brokenShaders(const fs::path& dir, const std::string& file) {
 TEST_F(ViewerGui, TheOpenGLTwinDrawsWhatTheEngineDraws) {
     REQUIRE_XVFB();
     const Outcome r = viewer(
-        "--renderer gl --frames 5 --size 1280x720 --no-vsync --screenshot gl.png "
+        "--renderer gl --frames 5 --size 1660x720 --no-vsync --screenshot gl.png "
         "--window-shot window.png --state state.txt --fps-report");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const auto state = readState(path("state.txt"));
@@ -108,10 +108,11 @@ TEST_F(ViewerGui, TheOpenGLTwinDrawsWhatTheEngineDraws) {
     // The window shows the twin's picture texel for texel where no panel covers it, and the
     // panels over it: the twin left ImGui's state and the frame's drawing alone.
     const Framebuffer window = readPng(path("window.png"));
-    ASSERT_EQ(window.width, 1280);
-    EXPECT_LT(differingShare(window, gl, 400, 300, 940, 660), 0.001);
+    ASSERT_EQ(window.width, 1660);
+    EXPECT_LT(differingShareAt(window, gl, kFrameX, 200, 100, 1280, 720),
+              0.001);  // "OpenGL twin" label at bottom left
     EXPECT_GT(differingShare(window, gl, 15, 15, 365, 300), 0.5);
-    EXPECT_GT(differingShare(window, gl, 1000, 15, 1260, 150), 0.5);
+    EXPECT_GT(differingShareAt(window, gl, kFrameX, 1280 - 150, 12, 1280 - 12, 40), 0.2);
 }
 
 TEST_F(ViewerGui, SideBySideIsTheEngineLeftAndTheTwinRight) {
@@ -119,7 +120,7 @@ TEST_F(ViewerGui, SideBySideIsTheEngineLeftAndTheTwinRight) {
     for (const bool serial : {false, true}) {
         SCOPED_TRACE(serial ? "serial" : "pipelined");
         const Outcome r =
-            viewer(std::string("--renderer split --frames 4 --size 1280x720 --no-vsync ") +
+            viewer(std::string("--renderer split --frames 4 --size 1660x720 --no-vsync ") +
                    (serial ? "--serial " : "") + "--screenshot split.png --state state.txt");
         ASSERT_EQ(r.exitCode, 0) << r.out;
         const auto state = readState(path("state.txt"));
@@ -136,7 +137,7 @@ TEST_F(ViewerGui, SideBySideIsTheEngineLeftAndTheTwinRight) {
 
     // The difference of the two: black where they agree, which is nearly everywhere.
     const Outcome r = viewer(
-        "--renderer split --difference --frames 3 --size 1280x720 --no-vsync "
+        "--renderer split --difference --frames 3 --size 1660x720 --no-vsync "
         "--screenshot heat.png");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const Framebuffer heat = readPng(path("heat.png"));
@@ -180,7 +181,7 @@ TEST_F(ViewerGui, ATwinThatCannotDrawSaysWhyAndTheEngineTakesOver) {
     REQUIRE_XVFB();
     const std::string shaders = brokenShaders(dir, "twin.frag");
     const Outcome r = viewer(
-        "--renderer gl --frames 4 --size 1280x720 --no-vsync --screenshot frame.png "
+        "--renderer gl --frames 4 --size 1660x720 --no-vsync --screenshot frame.png "
         "--window-shot window.png --state state.txt",
         "FACET_SHADERS=" + shaders);
     ASSERT_EQ(r.exitCode, 0) << r.out;
@@ -198,8 +199,8 @@ TEST_F(ViewerGui, ATwinThatCannotDrawSaysWhyAndTheEngineTakesOver) {
     EXPECT_EQ(diffImages(frame, cliRender("cpu.png")).pixelsDiffering, 0u);
     // ...under the error popup, in the middle of the window.
     const Framebuffer window = readPng(path("window.png"));
-    ASSERT_EQ(window.width, 1280);
-    EXPECT_GT(differingShare(window, frame, 500, 330, 780, 390), 0.3);
+    ASSERT_EQ(window.width, 1660);
+    EXPECT_GT(differingShareAt(window, frame, kFrameX, 330, 330, 950, 390), 0.3);
 }
 
 TEST_F(ViewerGui, ABrokenFrameShaderIsOneMessageNamingTheFile) {

@@ -52,9 +52,10 @@ struct AccuracyResult {
 
 /// Times every method round-robin: `warmup` untimed frames each, then per round one timed frame
 /// each, so a stretch when another process holds the cores slows every method alike instead of
-/// the one that happened to be measured then. `beforeRender`, when set, is called with the
-/// method's index before each frame (progress; it may throw to stop). Returns the frame times
-/// (ms) per method.
+/// the one that happened to be measured then. Each timed frame right follows an untimed one of
+/// the same method, so no method is timed with the previous method's data in the caches.
+/// `beforeRender`, when set, is called with the method's index before each round's frames of it
+/// (progress; it may throw to stop). Returns the frame times (ms) per method.
 std::vector<std::vector<double>> timeMethods(
     Renderer& renderer, const Scene& scene, const std::vector<AccuracyMethod>& methods, int frames,
     int warmup, Framebuffer& frame, const std::function<void(std::size_t)>& beforeRender = {});

@@ -52,6 +52,22 @@ bool sameMethod(const RenderSettings& a, const RenderSettings& b) {
     return method(a) == method(b);
 }
 
+std::vector<app::AccuracyMethod> methodsBelowTruth(const std::vector<app::AccuracyMethod>& methods,
+                                                   int samples, std::string* leftOut) {
+    std::vector<app::AccuracyMethod> kept;
+    std::string out;
+    for (const app::AccuracyMethod& m : methods) {
+        if (std::max(1, m.settings.supersample) < samples) {
+            kept.push_back(m);
+        } else {
+            if (!out.empty()) out += ", ";
+            out += m.name;
+        }
+    }
+    if (leftOut) *leftOut = out;
+    return kept;
+}
+
 void markPareto(std::vector<AccuracyRow>& rows) {
     for (AccuracyRow& r : rows) {
         r.pareto = std::none_of(rows.begin(), rows.end(), [&r](const AccuracyRow& o) {
@@ -87,6 +103,7 @@ std::string accuracyStateText(const AccuracyReport* report) {
     s << "accuracy_rows " << report->rows.size() << "\n";
     s << "accuracy_samples " << report->samples << "\n";
     s << "accuracy_size " << report->width << " " << report->height << "\n";
+    s << "accuracy_left_out " << report->leftOut << "\n";
     for (const AccuracyRow& r : report->rows) {
         char buf[256];
         std::snprintf(buf, sizeof buf, "accuracy_%s_%s %.4f %.4f %.3f %.1f %.5f %d\n",
@@ -179,8 +196,8 @@ void AccuracyJob::run(const Request& request) {
         report->width = scene.camera.width;
         report->height = scene.camera.height;
         report->frames = request.frames;
-        const std::vector<app::AccuracyMethod> methods =
-            app::accuracyMethods(scene, request.view.settings);
+        const std::vector<app::AccuracyMethod> methods = methodsBelowTruth(
+            app::accuracyMethods(scene, request.view.settings), request.samples, &report->leftOut);
 
         const auto t0 = Clock::now();
         const GroundTruth truth =

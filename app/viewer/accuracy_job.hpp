@@ -80,7 +80,14 @@ struct AccuracyReport {
     int frames = 0;                   ///< timed frames per method
     double groundTruthSeconds = 0.0;  ///< how long the ground truth took
     std::vector<AccuracyRow> rows;
+    std::string leftOut;  ///< methods not measured: as many samples as the truth or more
 };
+
+/// The methods a ground truth of samples×samples per pixel can judge: those with fewer samples
+/// per pixel than it (a 4×4 method against a 4×4 truth would be measured against itself). The
+/// names of the others, comma separated, go to `leftOut`.
+std::vector<app::AccuracyMethod> methodsBelowTruth(const std::vector<app::AccuracyMethod>& methods,
+                                                   int samples, std::string* leftOut = nullptr);
 
 /// RMSEs within this share of each other count as equal on the Pareto front.
 inline constexpr double kParetoRmseTie = 1e-3;

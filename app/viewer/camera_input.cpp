@@ -1,8 +1,8 @@
 // Mouse and keyboard for the view: orbit with the left button, pan with the right or middle,
-// zoom with the wheel, the divider (Compare, or CPU | OpenGL) by dragging it; G cycles the
-// renderer. Input is read from ImGui after NewFrame(), when WantCaptureMouse describes this very
-// frame: a press over a panel belongs to the panel and never starts a camera drag, even if the
-// pointer jumped there since last frame.
+// zoom with the wheel, the divider (Compare, or CPU | OpenGL) by dragging it, the light by its
+// marker (light_input.cpp); the keys' actions first (key_actions.cpp). Input is read from ImGui
+// after NewFrame(), when WantCaptureMouse describes this very frame: a press over a panel belongs
+// to the panel and never starts a camera drag, even if the pointer jumped there since last frame.
 
 #include <imgui.h>
 
@@ -31,14 +31,14 @@ bool overDivider(const App& app, ImVec2 mouse) {
 
 void handleInput(App& app) {
     ImGuiIO& io = ImGui::GetIO();
-    if (app.keys.resetCamera) app.model.resetCamera();
-    if (app.keys.togglePanels) app.ui.showPanels = !app.ui.showPanels;
-    if (app.keys.cycleRenderer)
-        selectRenderer(app.model.rendererChoice, nextRenderer(app.model.rendererChoice),
-                       app.compare);
-    app.keys.resetCamera = app.keys.togglePanels = app.keys.cycleRenderer = false;
+    applyActions(app);
 
-    if (app.drag.button < 0 && !io.WantCaptureMouse) {
+    // The light's marker (or Ctrl + drag) takes a left press before the camera does.
+    if (app.drag.button < 0 && app.work.lightDrag == LightDrag::None && !io.WantCaptureMouse &&
+        ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+        startLightDrag(app);
+    dragLightStep(app);
+    if (app.drag.button < 0 && app.work.lightDrag == LightDrag::None && !io.WantCaptureMouse) {
         for (int b = 0; b < 3; ++b) {
             if (!ImGui::IsMouseClicked(b)) continue;
             app.drag.button = b;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "compare_stats.hpp"
 #include "settings_map.hpp"
 
 namespace facet::view {
@@ -49,9 +50,11 @@ const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings&
 
 ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, CompareDisplay display,
                        double divider, int heatScale, Framebuffer& shown) {
-    if (display == CompareDisplay::Difference) return diffImages(left, right, &shown, heatScale);
-    composeSplit(left, right, dividerColumn(divider, left.width), shown);
-    return diffImages(left, right);
+    if (display == CompareDisplay::Difference)
+        diffImages(left, right, &shown, heatScale);
+    else
+        composeSplit(left, right, dividerColumn(divider, left.width), shown);
+    return diffCovered(left, right);
 }
 
 const Framebuffer& CompareView::compose(const CompareSettings& compare) {

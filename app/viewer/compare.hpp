@@ -39,7 +39,7 @@ struct CompareView {
     Framebuffer shown;  ///< the composed picture (split or heat map)
     RenderStats leftStats;
     RenderStats rightStats;
-    ImageDiff diff;  ///< left against right, over the whole frame
+    ImageDiff diff;  ///< left against right, over the pixels either covers (diffCovered)
 
     /// Renders both sides with `settings`, each with the interpolation `compare` gives it.
     void renderSides(const Scene& scene, const RenderSettings& settings,
@@ -53,7 +53,8 @@ struct CompareView {
                               const CompareSettings& compare);
 };
 
-/// Compares `left` with `right` (the numbers over the whole frame) and composes `shown`: the
+/// Compares `left` with `right` (the numbers over the pixels either side covers) and composes
+/// `shown`: the
 /// split at `divider` (a fraction of the width) or the heat map up to `heatScale` (0: the
 /// largest error). The Compare view's two interpolations and the CPU | OpenGL view both use it.
 ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, CompareDisplay display,

@@ -36,16 +36,14 @@ int App::frame(Clock::time_point start, bool last) {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     // The frame's size and place first: input maps mouse pixels through them.
-    const Camera& camera = model.prepareFrame(fbWidth, fbHeight);
-    view = letterbox(camera.width, camera.height, fbWidth, fbHeight);
+    placeFrame(*this);
     handleInput(*this);
     drawPanels(*this);
     if (ui.vsync != vsyncApplied) {
         vsyncApplied = ui.vsync;
         glfwSwapInterval(vsyncApplied ? 1 : 0);
     }
-    const Camera& final = model.prepareFrame(fbWidth, fbHeight);  // after the panels' edits
-    view = letterbox(final.width, final.height, fbWidth, fbHeight);
+    placeFrame(*this);  // after the panels' edits (and the side bar's new width)
     if (model.rendererChoice != lastChoice) {
         ++rendererLog.switches;
         lastChoice = model.rendererChoice;
@@ -76,8 +74,7 @@ int App::frame(Clock::time_point start, bool last) {
         sides.leftStats = r.stats;
         sides.rightStats = r.rightStats;
         if (r.compared) sides.diff = r.diff;
-        lastTimes.render = r.renderMs;
-        lastTimes.compare = r.compareMs;
+        recordEngineTimes(r, lastTimes);
         ++rendererLog.engineFrames;
     };
     if (plan.engine) submit();

@@ -54,6 +54,19 @@ StageTimes FrameHistory::recentMedian(std::size_t count) const {
     return mediansFrom(frames, frames.size() > count ? frames.size() - count : 0);
 }
 
+FrameTimes FrameHistory::medianFrameBy(std::size_t count, double FrameTimes::*field) const {
+    std::vector<const FrameTimes*> ran;
+    const std::size_t begin = frames.size() > count ? frames.size() - count : 0;
+    for (std::size_t i = begin; i < frames.size(); ++i)
+        if (frames[i].*field > 0.0) ran.push_back(&frames[i]);
+    if (ran.empty()) return {};
+    const auto mid = ran.begin() + static_cast<std::ptrdiff_t>((ran.size() - 1) / 2);
+    std::nth_element(
+        ran.begin(), mid, ran.end(),
+        [field](const FrameTimes* a, const FrameTimes* b) { return a->*field < b->*field; });
+    return **mid;
+}
+
 std::string fpsReport(const FrameHistory& history, std::size_t skip) {
     const std::size_t total = history.dropped + history.frames.size();
     const std::size_t n = total > skip ? total - skip : 0;

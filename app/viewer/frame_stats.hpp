@@ -31,6 +31,12 @@ struct StageTimes {
     double present = 0.0;       ///< buffer swap and window events
     double wait = 0.0;          ///< the main thread waiting for the engine (its thread)
     double total = 0.0;         ///< start of one frame to the start of the next
+    // The engine's stages within `render`, from the same job (both sides in Compare), so they
+    // never add up to more than it.
+    double engineClear = 0.0;
+    double engineVertex = 0.0;
+    double engineRaster = 0.0;  ///< rasterize and shade
+    double enginePost = 0.0;    ///< normals, legend, supersampling's resolve
 };
 
 /// Every frame's times (for medians) and the last `window` totals in order (for the plot).
@@ -50,6 +56,12 @@ struct FrameHistory {
 
     /// Per-stage medians over the last `count` frames.
     StageTimes recentMedian(std::size_t count) const;
+
+    /// Among the last `count` frames in which `field` is above 0, the one whose `field` is the
+    /// median (the lower middle for an even count), whole: its stages were measured with it, so
+    /// they add up to no more than it, as medians taken stage by stage need not. All zero when
+    /// no frame qualifies.
+    StageTimes medianFrameBy(std::size_t count, double StageTimes::*field) const;
 };
 
 /// One line: "median 123.4 fps (8.10 ms: render 6.00, twin 0.00, compare 0.00, upload 0.20,

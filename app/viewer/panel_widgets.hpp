@@ -4,9 +4,15 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "log_slider.hpp"
 
 namespace facet::view {
 
@@ -33,6 +39,49 @@ inline bool sliderDouble(const char* label, double& v, double min, double max,
                          const char* format = "%.3f", bool log = false) {
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &min, &max, format,
                                log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+}
+
+/// A slider over a double on a log scale from `min` to `max` (log_slider.hpp), with a field
+/// beside it that takes any typed value ≥ 0 (beyond the slider's range too) on Enter.
+inline bool logSliderDouble(const char* label, double& v, double min, double max) {
+    ImGui::PushID(label);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float full = ImGui::CalcItemWidth();
+    const float field = std::min(0.35f * full, ImGui::GetFontSize() * 4.5f);
+    ImGui::SetNextItemWidth(std::max(1.0f, full - field - style.ItemInnerSpacing.x));
+    float t = static_cast<float>(logSliderPosition(v, min, max));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);  // shown as it is: no % in a number
+    bool changed = ImGui::SliderFloat("##log", &t, 0.0f, 1.0f, text, ImGuiSliderFlags_NoInput);
+    if (changed) v = roundSignificant(logSliderValue(t, min, max), 3);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("log scale %g to %g; type beyond it at right", min, max);
+    ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(field);
+    double typed = v;
+    if (ImGui::InputDouble("##typed", &typed, 0.0, 0.0, "%.4g",
+                           ImGuiInputTextFlags_EnterReturnsTrue) &&
+        std::isfinite(typed) && typed >= 0.0) {
+        v = typed;
+        changed = true;
+    }
+    ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
+    ImGui::TextUnformatted(label, std::strstr(label, "##"));  // the visible part
+    ImGui::PopID();
+    return changed;
+}
+
+/// A drag field over a double ≥ `min` for fine values: `perPixel` per pixel of drag, Alt for a
+/// hundredth of it, Shift for ten times; double-click or Ctrl+click types a value.
+inline bool fineDouble(const char* label, double& v, double perPixel, double min = 0.0,
+                       const char* format = "%.4f") {
+    const double max = 1e9;
+    const bool changed = ImGui::DragScalar(label, ImGuiDataType_Double, &v,
+                                           static_cast<float>(perPixel), &min, &max, format);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("drag: %g a pixel, Alt finer, Shift coarser; double-click types",
+                          perPixel);
+    return changed;
 }
 
 /// A drag field over three doubles.

@@ -6,9 +6,6 @@ namespace facet::view {
 
 struct App;
 
-/// Every panel and window of one frame (call between ImGui::NewFrame and ImGui::Render).
-void drawPanels(App& app);
-
 /// Scene: path field, a folder's .scene files, recent files; mesh facts.
 void scenePanel(App& app);
 /// Texture: the current image and a path field to load another.
@@ -25,8 +22,11 @@ void comparePanel(App& app);
 void accuracySection(App& app);
 /// Screenshot: folder, whole window too, save button.
 void screenshotPanel(App& app);
-/// Stats window: fps, frame time split, history plot, what the engine drew.
-void statsWindow(App& app);
+/// Stats panel: fps, frame time split (the engine's stages from the same frame as its total),
+/// history plot, what the engine drew.
+void statsPanel(App& app);
+/// The ground-truth table in a window of its own (large: eight columns), when open.
+void accuracyWindow(App& app);
 /// Labels over the Compare view naming each side.
 void compareOverlay(App& app);
 /// The modal error popup, when one is pending or open.

@@ -100,11 +100,34 @@ void accuracySection(App& app) {
     }
 
     const std::shared_ptr<const AccuracyReport> report = job.report();
-    app.ui.accuracyWide = report != nullptr;
     if (report) {
-        ImGui::Text("%dx%d, truth %dx%d samples (%.1f s), median of %d", report->width,
-                    report->height, report->samples, report->samples, report->groundTruthSeconds,
-                    report->frames);
+        // A new report opens its table (a window of its own: eight columns).
+        if (job.reportCount() != app.work.accuracyTableSeen) {
+            app.work.accuracyTableSeen = job.reportCount();
+            app.work.accuracyTable = true;
+        }
+        ImGui::Text("%zu methods, truth %dx%d samples (%.1f s)", report->rows.size(),
+                    report->samples, report->samples, report->groundTruthSeconds);
+        ImGui::Checkbox("show the table", &app.work.accuracyTable);
+    }
+    ImGui::TreePop();
+}
+
+void accuracyWindow(App& app) {
+    const std::shared_ptr<const AccuracyReport> report = app.accuracy.report();
+    if (!report || !app.work.accuracyTable) return;
+    const Rect& image = app.work.layout.image;
+    const float margin = 10.0f * app.work.scale;
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x) + margin,
+                                   static_cast<float>(image.y + image.h) - margin),
+                            ImGuiCond_Appearing, ImVec2(0.0f, 1.0f));
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
+    if (ImGui::Begin("Against the ground truth", &app.work.accuracyTable, flags)) {
+        noteWindow(app, "table");
+        ImGui::Text("%dx%d, ground truth %dx%d samples per pixel (%.1f s), median of %d frames",
+                    report->width, report->height, report->samples, report->samples,
+                    report->groundTruthSeconds, report->frames);
         const AccuracyView now =
             accuracyView(app.model.scene, app.model.sceneVersion, app.model.settings);
         if (!reportFresh(*report, now))
@@ -114,11 +137,16 @@ void accuracySection(App& app) {
         const int clicked = methodTable(*report, now.settings);
         if (clicked >= 0)
             applyMethod(report->rows[static_cast<std::size_t>(clicked)], app.model.settings);
+        if (!report->leftOut.empty())
+            ImGui::TextColored(kYellow, "left out, not coarser than the truth: %s",
+                               report->leftOut.c_str());
         ImGui::TextDisabled(
-            "RMSE, max: 8-bit steps. * Pareto front: no other\n"
-            "method both faster and more accurate. Click: use it.");
+            "RMSE, max: 8-bit steps. The truth is finer than every method listed.\n"
+            "* Pareto front: no other method both faster and more accurate.\n"
+            "Times: each timed frame follows one of the same method, rounds interleaved,\n"
+            "medians. Click a row: use that method.");
     }
-    ImGui::TreePop();
+    ImGui::End();
 }
 
 }  // namespace facet::view

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "framing.hpp"
 #include "panel_widgets.hpp"
 #include "panels.hpp"
 #include "viewer_app.hpp"
@@ -22,7 +23,9 @@ void cameraPanel(App& app) {
     edited |= dragDouble3("look-at", &o.target.x, std::max(1e-6, o.distance * 0.005), "%.3f");
     if (edited) m.orbitEdited();
     sliderDouble("focal (px)", m.focal, 10.0, 100000.0, "%.1f", true);
-    if (ImGui::Button("Reset to the scene's camera (R)")) m.resetCamera();
+    if (ImGui::Button("Frame the model (F)")) frameModel(m);
+    ImGui::SameLine();
+    if (ImGui::Button("Scene's camera (Home, R)")) m.resetCamera();
 
     const Camera& frame = m.scene.camera;
     int policy = m.sizePolicy == SizePolicy::FollowWindow ? 0 : 1;
@@ -46,20 +49,27 @@ void lightPanel(App& app) {
     if (ImGui::RadioButton("point", &kind, 0) && light.position.w == 0.0) light.position.w = 1.0;
     ImGui::SameLine();
     if (ImGui::RadioButton("directional (w = 0)", &kind, 1)) light.position.w = 0.0;
-    if (kind == 0 && light.position.w != 1.0)
+    // One line whatever the kind, so the rows below do not move.
+    if (light.position.w == 0.0)
+        ImGui::TextDisabled("coming from direction x y z");
+    else if (light.position.w != 1.0)
         ImGui::TextDisabled("w = %.3g: the light sits at xyz / w", light.position.w);
-    sliderDouble("Ia (ambient)", lighting.ambient, 0.0, 4.0);
-    sliderDouble("Id (light)", light.intensity, 0.0, 10.0);
+    else
+        ImGui::TextDisabled("a point at x y z");
+    fineDouble("Ia (ambient)", lighting.ambient, 0.005);
+    fineDouble("Id (light)", light.intensity, 0.01);
 
     Material& mat = lighting.material;
     ImGui::Separator();
     ImGui::TextUnformatted("Material");
-    sliderDouble("Ka", mat.ka, 0.0, 2.0);
-    sliderDouble("Kd", mat.kd, 0.0, 2.0);
-    sliderDouble("Ks", mat.ks, 0.0, 2.0);
-    sliderDouble("s (shininess)", mat.s, 0.0, 1024.0, "%.2f", true);
+    fineDouble("Ka", mat.ka, 0.002);
+    fineDouble("Kd", mat.kd, 0.002);
+    fineDouble("Ks", mat.ks, 0.002);
+    logSliderDouble("s (shininess)", mat.s, 1.0, 1000.0);
     if (app.model.settings.lighting == Lighting::Off)
-        ImGui::TextDisabled("lighting is off: choose gouraud or phong in Render");
+        ImGui::TextDisabled("lighting is off: L, or gouraud / phong in Render");
+    else
+        ImGui::TextDisabled("drag the light's marker; Ctrl + drag turns it");
 }
 
 }  // namespace facet::view

@@ -31,12 +31,23 @@ void rendererPicker(App& app) {
         }
         ImGui::EndCombo();
     }
-    if (choice == RendererChoice::Cpu) return;
-    const std::string differences = GlRenderer::differences(app.model.settings);
-    if (differences.empty()) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
-    ImGui::TextWrapped("OpenGL twin: %s", differences.c_str());
-    ImGui::PopStyleColor();
+    // Always one line (the details on hover), so the rows below stay put when the choice changes.
+    const std::string differences =
+        choice == RendererChoice::Cpu ? "" : GlRenderer::differences(app.model.settings);
+    if (choice == RendererChoice::Cpu) {
+        ImGui::TextDisabled("G cycles: CPU, OpenGL twin, side by side");
+    } else if (differences.empty()) {
+        ImGui::TextDisabled("the OpenGL twin draws these settings as the engine");
+    } else {
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "OpenGL twin departs here (hover)");
+        if (ImGui::IsItemHovered()) {
+            ImGui::BeginTooltip();
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+            ImGui::TextUnformatted(differences.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::EndTooltip();
+        }
+    }
 }
 
 }  // namespace
@@ -59,12 +70,14 @@ void renderPanel(App& app) {
     int interp = nameIndex(interps, toString(s.interp));
     if (comboNames("interpolation", interps, interp))
         s.interp = parseInterp(interps[static_cast<std::size_t>(interp)]).value_or(s.interp);
-    if (s.interp == Interp::Subdivided) {
-        int n = s.subdivision;
-        if (ImGui::SliderInt("every N pixels", &n, kMinSubdivision, kMaxSubdivision, "%d",
-                             ImGuiSliderFlags_Logarithmic))
-            applyInterp(s, {Interp::Subdivided, n});
-    }
+    // Rows that apply to one mode only are greyed out in the others, never removed: the panel
+    // keeps its shape as modes change.
+    ImGui::BeginDisabled(s.interp != Interp::Subdivided);
+    int n = s.subdivision;
+    if (ImGui::SliderInt("every N pixels", &n, kMinSubdivision, kMaxSubdivision, "%d",
+                         ImGuiSliderFlags_Logarithmic))
+        applyInterp(s, {Interp::Subdivided, n});
+    ImGui::EndDisabled();
     int lighting = nameIndex(lightings, toString(s.lighting));
     if (comboNames("lighting", lightings, lighting)) {
         s.lighting =
@@ -82,14 +95,21 @@ void renderPanel(App& app) {
     }
     ImGui::Checkbox("cull back faces", &s.cullBackFaces);
     ImGui::Checkbox("show normals", &s.showNormals);
-    if (s.showNormals) {
-        // 0 means the engine's default, a hundredth of the bounding-box diagonal.
-        const double diagonal = computeBounds(*app.model.scene.mesh).diagonal();
+    {
+        ImGui::BeginDisabled(!s.showNormals);
+        // 0 means the engine's default, a hundredth of the bounding-box diagonal (walked over
+        // the mesh only when the normals show).
+        const double diagonal =
+            s.showNormals ? computeBounds(*app.model.scene.mesh).diagonal() : 1.0;
         sliderDouble("normal length", s.normalLength, 0.0, std::max(1e-6, 0.2 * diagonal),
                      s.normalLength > 0.0 ? "%.4f" : "auto");
+        ImGui::EndDisabled();
     }
-    if (s.mode == DrawMode::Vertices) ImGui::SliderInt("point size", &s.pointSize, 1, 15);
-    if (s.mode == DrawMode::Solid) {
+    ImGui::BeginDisabled(s.mode != DrawMode::Vertices);
+    ImGui::SliderInt("point size", &s.pointSize, 1, 15);
+    ImGui::EndDisabled();
+    {
+        ImGui::BeginDisabled(s.mode != DrawMode::Solid);
         // Coverage only: interpolation always uses the unsnapped vertices.
         int bits = s.subPixelBits;
         if (ImGui::SliderInt("sub-pixel bits", &bits, kMinSubPixelBits, kMaxSubPixelBits))
@@ -106,6 +126,7 @@ void renderPanel(App& app) {
             else
                 s.supersample = ss + 1;
         }
+        ImGui::EndDisabled();
     }
     float rgb[3];
     rgbFromHex(s.background, rgb);

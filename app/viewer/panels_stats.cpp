@@ -1,5 +1,6 @@
-// Stats window (fps, the frame time split with the CPU engine's and the OpenGL twin's times
-// side by side, its history, what each drew) and the Screenshot panel.
+// Stats panel (fps, the frame time split with the CPU engine's and the OpenGL twin's times
+// side by side, its history, what each drew) and the Screenshot panel. The compact overlay in
+// the image's corner is sidebar.cpp's.
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -31,16 +32,7 @@ void twinCounts(const GlStats& s) {
 
 }  // namespace
 
-void statsWindow(App& app) {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver,
-                            ImVec2(1.0f, 0.0f));
-    // Auto-resize: the numbers change width as they change value.
-    if (!ImGui::Begin("Stats", nullptr,
-                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing)) {
-        ImGui::End();
-        return;
-    }
+void statsPanel(App& app) {
     // Medians over the last second or so: steadier than the last frame, still current.
     const StageTimes m = app.history.recentMedian(60);
     ImGui::Text("%.1f fps, %.2f ms a frame (median of 60)", m.total > 0 ? 1000.0 / m.total : 0.0,
@@ -55,22 +47,25 @@ void statsWindow(App& app) {
             ImGui::Text("%7.2f ms", ms);
         };
         if (plan.engine) {
-            row("CPU engine render", m.render);
-            // The engine's own split of its last frame (the depth colours are in "raster" for
-            // the depth shader).
-            const RenderStats& e = app.model.stats;
-            row("  clear", e.clearMs);
-            row("  vertices", e.vertexMs);
-            row("  raster + shade", e.rasterMs);
-            row("  post passes", e.postMs);
+            // One frame's total with its own stages (the frame of median engine time), so the
+            // parts add up to the whole; what the stages leave is set-up and hand-over.
+            const FrameTimes e = app.history.medianFrameBy(60, &FrameTimes::render);
+            row("CPU engine render", e.render);
+            row("  clear", e.engineClear);
+            row("  vertices", e.engineVertex);
+            row("  raster + shade", e.engineRaster);
+            row("  post passes", e.enginePost);
+            row("  other", std::max(0.0, e.render - e.engineClear - e.engineVertex -
+                                             e.engineRaster - e.enginePost));
         }
         if (plan.twin) {
             // Like the engine's time, the twin's ends with the picture in memory: its draw is
             // timed on the CPU clock up to glFinish, then the readback.
-            row("OpenGL twin render", m.twin);
-            row("  prepare + upload", m.twinUpload);
-            row("  draw (to glFinish)", m.twinDraw);
-            row("  readback + post", m.twinReadback);
+            const FrameTimes t = app.history.medianFrameBy(60, &FrameTimes::twin);
+            row("OpenGL twin render", t.twin);
+            row("  prepare + upload", t.twinUpload);
+            row("  draw (to glFinish)", t.twinDraw);
+            row("  readback + post", t.twinReadback);
         }
         if (plan.twoSides()) row("compare (diff)", m.compare);
         row("upload", m.upload);
@@ -80,6 +75,7 @@ void statsWindow(App& app) {
         if (plan.engine) row("waiting for engine", m.wait);
         ImGui::EndTable();
     }
+    ImGui::TextDisabled("a renderer's stages: its frame of median time");
     // Pipelined, the engine's time overlaps the drawing: the frame costs about the larger part.
     ImGui::Checkbox("engine on its own thread", &app.ui.pipelined);
     if (plan.twin && !app.rendererLog.device.empty())
@@ -93,7 +89,7 @@ void statsWindow(App& app) {
     char overlay[48];
     std::snprintf(overlay, sizeof overlay, "frame ms (max %.1f)", top / 1.2f);
     ImGui::PlotLines("##history", plot.data(), static_cast<int>(plot.size()), 0, overlay, 0.0f, top,
-                     ImVec2(300.0f, 60.0f));
+                     ImVec2(-1.0f, 60.0f * app.work.scale));
     const Camera& c = app.model.scene.camera;
     ImGui::Text("frame %dx%d", c.width, c.height);
     if (plan.engineCompare) {
@@ -103,11 +99,11 @@ void statsWindow(App& app) {
         drawCounts(plan.twin ? "CPU: " : "", app.model.stats);
     }
     if (plan.twin) twinCounts(app.twin.stats);
-    ImGui::End();
 }
 
 void screenshotPanel(App& app) {
     ImGui::InputText("folder", &app.ui.screenshotFolder);
+    ImGui::TextDisabled("created when the first screenshot is saved");
     ImGui::Checkbox("the whole window too", &app.ui.screenshotWindowToo);
     if (ImGui::Button("Save the frame (F12 or P)")) app.screenshotRequested = true;
     if (!app.ui.lastScreenshot.empty()) ImGui::TextWrapped("%s", app.ui.lastScreenshot.c_str());

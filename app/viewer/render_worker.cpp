@@ -30,6 +30,17 @@ void RenderWorker::submit(const Scene& scene, const RenderSettings& settings,
     cv_.notify_all();
 }
 
+void recordEngineTimes(const RenderResult& r, FrameTimes& t) {
+    t.render = r.renderMs;
+    t.compare = r.compareMs;
+    const RenderStats none;
+    const RenderStats& right = r.compared ? r.rightStats : none;
+    t.engineClear = r.stats.clearMs + right.clearMs;
+    t.engineVertex = r.stats.vertexMs + right.vertexMs;
+    t.engineRaster = r.stats.rasterMs + right.rasterMs;
+    t.enginePost = r.stats.postMs + right.postMs;
+}
+
 const RenderResult& RenderWorker::wait(Framebuffer& shown) {
     std::unique_lock lock(mutex_);
     cv_.wait(lock, [this] { return !pending_; });

@@ -16,6 +16,7 @@
 #include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
+#include "frame_stats.hpp"
 
 namespace facet::view {
 
@@ -28,6 +29,10 @@ struct RenderResult {
     double renderMs = 0.0;   ///< engine time (both sides in Compare)
     double compareMs = 0.0;  ///< difference and composition time
 };
+
+/// Copies a job's times into a frame's: the engine's total, its stages (both sides summed in
+/// Compare) and the comparison's.
+void recordEngineTimes(const RenderResult& result, FrameTimes& times);
 
 /// Renders submitted frames on its own thread, one job at a time.
 class RenderWorker {

@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "facet/scene_io.hpp"
 #include "file_list.hpp"
@@ -19,6 +20,7 @@
 #include "resources.hpp"
 #include "scene_defaults.hpp"
 #include "screenshot.hpp"
+#include "screenshot_folder.hpp"
 #include "state_file.hpp"
 
 namespace facet::view {
@@ -46,46 +48,69 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     }
     // A text field being edited owns the keyboard (P is a letter, Esc leaves the field).
     if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
+    // Keys without a character here; the others come through onChar, as typed.
+    std::optional<NamedKey> named;
     switch (key) {
         case GLFW_KEY_ESCAPE:
-            app->keys.quit = true;
-            break;
-        case GLFW_KEY_F12:
-        case GLFW_KEY_P:
-            app->keys.screenshot = true;
-            break;
-        case GLFW_KEY_R:
-            app->keys.resetCamera = true;
+            named = NamedKey::Escape;
             break;
         case GLFW_KEY_TAB:
-            app->keys.togglePanels = true;
+            named = NamedKey::Tab;
             break;
-        case GLFW_KEY_G:
-            app->keys.cycleRenderer = true;
+        case GLFW_KEY_HOME:
+            named = NamedKey::Home;
+            break;
+        case GLFW_KEY_F1:
+            named = NamedKey::F1;
+            break;
+        case GLFW_KEY_F11:
+            named = NamedKey::F11;
+            break;
+        case GLFW_KEY_F12:
+            named = NamedKey::F12;
             break;
         default:
-            break;
+            return;
     }
+    if (const std::optional<Action> a = actionForKey(*named)) app->work.actions.push_back(*a);
+}
+
+void onChar(GLFWwindow* window, unsigned codepoint) {
+    App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
+    if (const std::optional<Action> a = actionForChar(codepoint)) app->work.actions.push_back(*a);
+}
+
+void onContentScale(GLFWwindow* window, float, float) {
+    if (App* app = static_cast<App*>(glfwGetWindowUserPointer(window)))
+        app->work.scaleChanged = true;
 }
 
 std::string windowTitle(const Scene& scene) {
     return "facet-view - " + std::filesystem::path(scene.path).filename().string();
 }
 
-/// The window size: --size, else the scene's image scaled down (aspect kept) to fit the screen.
-void initialWindowSize(const ViewerOptions& o, const Camera& camera, int& w, int& h) {
+/// The window size: --size, else room for the scene's image beside the side bar, within the
+/// monitor's work area less the window's decorations (the image shrinks, aspect kept, to fit).
+void initialWindowSize(const ViewerOptions& o, const Camera& camera, GLFWwindow* window,
+                       int sidebarWidth, int& w, int& h) {
     if (o.width > 0 && o.height > 0) {
         w = o.width;
         h = o.height;
         return;
     }
-    w = camera.width;
-    h = camera.height;
-    const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
-    if (!mode || (w <= mode->width && h <= mode->height)) return;
-    const Rect fit = letterbox(w, h, mode->width, mode->height);
-    w = fit.w;
-    h = fit.h;
+    int workW = 0, workH = 0;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        int x = 0, y = 0;
+        glfwGetMonitorWorkarea(monitor, &x, &y, &workW, &workH);
+    }
+    int left = 0, top = 0, right = 0, bottom = 0;  // decorations; 0 without a window manager
+    glfwGetWindowFrameSize(window, &left, &top, &right, &bottom);
+    if (workW > 0) workW -= left + right;
+    if (workH > 0) workH -= top + bottom;
+    const OpeningSize size = openingSize(camera.width, camera.height, sidebarWidth, workW, workH);
+    w = size.width;
+    h = size.height;
 }
 
 }  // namespace
@@ -117,9 +142,15 @@ void openTexture(App& app, const std::string& path) {
 
 void takeScreenshot(App& app) {
     if (!app.shown) return;
+    if (Status error = ensureFolder(app.ui.screenshotFolder)) {
+        app.ui.lastScreenshot = error->what();
+        showNotice(app, app.ui.lastScreenshot);
+        return;
+    }
     const std::string framePath = nextFreePath(app.ui.screenshotFolder, "facet-frame");
     if (Status error = saveFrameShot(*app.shown, framePath)) {
         app.ui.lastScreenshot = error->what();
+        showNotice(app, app.ui.lastScreenshot);
         return;
     }
     app.ui.lastScreenshot = framePath;
@@ -128,6 +159,7 @@ void takeScreenshot(App& app) {
         const Status error = saveWindowShot(app.fbWidth, app.fbHeight, windowPath);
         app.ui.lastScreenshot += error ? " (window: " + error->what() + ")" : ", " + windowPath;
     }
+    showNotice(app, "Saved " + app.ui.lastScreenshot);
     std::printf("facet-view: saved %s\n", app.ui.lastScreenshot.c_str());
     std::fflush(stdout);
 }
@@ -169,6 +201,7 @@ int App::run() {
     ui.folderFiles = listFolder(ui.folder, &ui.folderError);
     ui.saveScenePath = defaultSavePath(path);
     ui.texturePath = model.scene.texturePath;
+    ui.screenshotFolder = screenshotFolder(picturesEnvFromProcess());
     ui.vsync = !options.noVsync;
     model.sizePolicy = options.keepSceneSize ? SizePolicy::SceneSize : SizePolicy::FollowWindow;
     compare.enabled = options.compare;
@@ -187,8 +220,6 @@ int App::run() {
                      gGlfwError.c_str());
         return 2;
     }
-    int width = 0, height = 0;
-    initialWindowSize(options, model.sceneCamera, width, height);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -196,17 +227,29 @@ int App::run() {
     // No depth or stencil buffer: nothing here needs one, so none is cleared or carried.
     glfwWindowHint(GLFW_DEPTH_BITS, 0);
     glfwWindowHint(GLFW_STENCIL_BITS, 0);
-    window = glfwCreateWindow(width, height, windowTitle(model.scene).c_str(), nullptr, nullptr);
+    // Hidden until sized: its content scale and decorations decide the size it opens at.
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    window = glfwCreateWindow(640, 480, windowTitle(model.scene).c_str(), nullptr, nullptr);
     if (!window) {
         std::fprintf(stderr, "facet-view: cannot create an OpenGL 3.3 core window (%s)\n",
                      gGlfwError.c_str());
         glfwTerminate();
         return 2;
     }
+    work.scale = windowUiScale(*this);
+    work.sidebarWidth = static_cast<int>(kSidebarWidth * work.scale + 0.5f);
+    int width = 0, height = 0;
+    initialWindowSize(options, model.sceneCamera, window, ui.showPanels ? work.sidebarWidth : 0,
+                      width, height);
+    glfwSetWindowSize(window, width, height);
+    glfwShowWindow(window);
     glfwMakeContextCurrent(window);
     glfwSwapInterval(ui.vsync ? 1 : 0);
     glfwSetWindowUserPointer(window, this);
-    glfwSetKeyCallback(window, onKey);  // before ImGui's, which chains to it
+    // Before ImGui's, which chain to them.
+    glfwSetKeyCallback(window, onKey);
+    glfwSetCharCallback(window, onChar);
+    glfwSetWindowContentScaleCallback(window, onContentScale);
     installFileDrop(*this);
 
     IMGUI_CHECKVERSION();
@@ -218,8 +261,7 @@ int App::run() {
         std::filesystem::create_directories(configFolder(), ec);
     }
     ImGui::GetIO().IniFilename = ui.iniPath.empty() ? nullptr : ui.iniPath.c_str();
-    ImGui::StyleColorsDark();
-    ImGui::GetStyle().Alpha = 0.95f;
+    applyUiStyle(work.scale, false);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -241,6 +283,15 @@ int App::run() {
             glfwPollEvents();
         const bool last = glfwWindowShouldClose(window) || keys.quit || gStopSignal ||
                           (options.frames > 0 && frameCount + 1 >= options.frames);
+        if (work.scaleChanged && options.uiScale <= 0.0) {  // moved to another monitor
+            const float scale = windowUiScale(*this);
+            work.sidebarWidth =
+                static_cast<int>(static_cast<float>(work.sidebarWidth) * scale / work.scale + 0.5f);
+            work.sidebarSizeSet = true;
+            work.scale = scale;
+            applyUiStyle(scale, true);
+        }
+        work.scaleChanged = false;
         glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
         if (fbWidth <= 0 || fbHeight <= 0) {  // minimised: nothing to draw
             if (last) break;
@@ -266,7 +317,8 @@ int App::run() {
     }
     if (!options.statePath.empty()) {
         const std::string text = stateText(model, frameCount) + rendererLogText(rendererLog) +
-                                 accuracyStateText(accuracy.report().get());
+                                 accuracyStateText(accuracy.report().get()) +
+                                 workspaceStateText(*this);
         if (Status e = writeTextFile(options.statePath, text)) {
             std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
             status = 1;

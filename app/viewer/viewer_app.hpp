@@ -20,6 +20,7 @@
 #include "renderer_choice.hpp"
 #include "twin_view.hpp"
 #include "viewer_model.hpp"
+#include "workspace_ui.hpp"
 
 struct GLFWwindow;
 
@@ -36,7 +37,7 @@ struct UiState {
     std::vector<std::string> dropped;  ///< paths dropped on the window since the last frame
     std::string iniPath;               ///< ImGui's layout file (kept alive for ImGui)
     std::string texturePath;           ///< the Texture panel's path field
-    std::string screenshotFolder = ".";
+    std::string screenshotFolder;  ///< set at start: the pictures folder (screenshot_folder.hpp)
     bool screenshotWindowToo = false;  ///< the screenshot key also saves the whole window
     std::string lastScreenshot;        ///< what the last screenshot wrote (or its error)
     std::string popupTitle;            ///< error popup; opened on the next frame when set
@@ -47,7 +48,6 @@ struct UiState {
     bool showPanels = true;  ///< Tab hides the panels
     int accuracySamples = kDefaultAccuracySamples;  ///< ground truth samples per axis
     bool accuracyOpen = false;  ///< the "Against the ground truth" section is open
-    bool accuracyWide = false;  ///< its table shows: the panel widens
 };
 
 /// A mouse drag that belongs to the viewer (it started over the image, not a panel).
@@ -56,15 +56,11 @@ struct DragState {
     bool divider = false;  ///< the drag moves the Compare divider
 };
 
-/// Keys seen by the GLFW key callback since the last frame (a press and release between two
-/// frames would be lost by polling).
+/// What the keys (key_map.hpp, dispatched by handleInput) asked the frame loop for.
 struct KeyEvents {
     bool quit = false;
     bool screenshot = false;
-    bool resetCamera = false;
-    bool togglePanels = false;
-    bool cycleRenderer = false;  ///< G: CPU engine → OpenGL twin → side by side → CPU engine
-    bool saveScene = false;      ///< Ctrl+S: save the scene shown
+    bool saveScene = false;  ///< Ctrl+S: save the scene shown
 };
 
 /// The whole viewer.
@@ -86,8 +82,9 @@ struct App {
     UiState ui;
     DragState drag;
     KeyEvents keys;
-    Rect view;        ///< where the frame is shown in the window
-    int fbWidth = 0;  ///< framebuffer size, pixels
+    WorkspaceUi work;  ///< side bar, overlays, pending key actions, light drag
+    Rect view;         ///< where the frame is shown in the window
+    int fbWidth = 0;   ///< framebuffer size, pixels
     int fbHeight = 0;
     const Framebuffer* shown = nullptr;  ///< the frame on screen: engine, twin or composed
     long long frameCount = 0;

@@ -1,0 +1,97 @@
+// The keys' actions in the window: the key map (key_map.hpp) says which action a key asks for;
+// the document's actions are applied there, the window's (help, quit, side bar, fullscreen,
+// screenshot, overlays) here. The same actions sit behind buttons in the side bar.
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+
+#include "viewer_app.hpp"
+
+namespace facet::view {
+namespace {
+
+/// The monitor holding most of the window (the primary one when none does).
+GLFWmonitor* monitorOf(GLFWwindow* window) {
+    int wx = 0, wy = 0, ww = 0, wh = 0;
+    glfwGetWindowPos(window, &wx, &wy);
+    glfwGetWindowSize(window, &ww, &wh);
+    int count = 0;
+    GLFWmonitor** monitors = glfwGetMonitors(&count);
+    GLFWmonitor* best = glfwGetPrimaryMonitor();
+    long long bestArea = 0;
+    for (int i = 0; i < count; ++i) {
+        const GLFWvidmode* mode = glfwGetVideoMode(monitors[i]);
+        if (!mode) continue;
+        int mx = 0, my = 0;
+        glfwGetMonitorPos(monitors[i], &mx, &my);
+        const long long w = std::min(wx + ww, mx + mode->width) - std::max(wx, mx);
+        const long long h = std::min(wy + wh, my + mode->height) - std::max(wy, my);
+        if (w > 0 && h > 0 && w * h > bestArea) {
+            bestArea = w * h;
+            best = monitors[i];
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+void applyActions(App& app) {
+    WorkspaceUi& w = app.work;
+    for (const Action a : w.actions) {
+        if (applyDocumentAction(a, app.model, app.compare)) continue;
+        switch (a) {
+            case Action::Help:
+                w.help = !w.help;
+                break;
+            case Action::Quit:
+                if (w.help)
+                    w.help = false;
+                else
+                    app.keys.quit = true;
+                break;
+            case Action::TogglePanels:
+                app.ui.showPanels = !app.ui.showPanels;
+                break;
+            case Action::Fullscreen:
+                toggleFullscreen(app);
+                break;
+            case Action::Screenshot:
+                app.keys.screenshot = true;
+                break;
+            case Action::ToggleStats:
+                w.statsOverlay = !w.statsOverlay;
+                break;
+            case Action::ToggleLightMarker:
+                w.lightMarker = !w.lightMarker;
+                break;
+            default:
+                break;
+        }
+    }
+    w.actions.clear();
+}
+
+void toggleFullscreen(App& app) {
+    WorkspaceUi& w = app.work;
+    if (!app.window) return;
+    if (!w.fullscreen) {
+        glfwGetWindowPos(app.window, &w.windowed[0], &w.windowed[1]);
+        glfwGetWindowSize(app.window, &w.windowed[2], &w.windowed[3]);
+        GLFWmonitor* monitor = monitorOf(app.window);
+        const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+        if (!mode) return;
+        glfwSetWindowMonitor(app.window, monitor, 0, 0, mode->width, mode->height,
+                             mode->refreshRate);
+        w.fullscreen = true;
+    } else {
+        glfwSetWindowMonitor(app.window, nullptr, w.windowed[0], w.windowed[1],
+                             std::max(1, w.windowed[2]), std::max(1, w.windowed[3]), 0);
+        w.fullscreen = false;
+    }
+    // The swap interval belongs to the context but some drivers reset it on a mode change.
+    glfwSwapInterval(app.ui.vsync ? 1 : 0);
+}
+
+}  // namespace facet::view

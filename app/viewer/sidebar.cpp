@@ -1,0 +1,256 @@
+// The workspace's layout and its windows: the side bar at the left holds every panel, the image
+// area beside it shows the frame and nothing else but the overlays the user turns on (a compact
+// stats box in its top right corner, the help, a notice, the light marker, Compare's labels).
+// Pixels of the side bar and of the frame never overlap: the frame is rendered for the image
+// area (placeFrame) after the side bar took its width.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "panels.hpp"
+#include "viewer_app.hpp"
+
+namespace facet::view {
+namespace {
+
+/// Where the next overlay windows go: flags for a box that takes no input and no focus.
+constexpr ImGuiWindowFlags kOverlay =
+    ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_AlwaysAutoResize |
+    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+
+SidebarState sidebarState(const App& app) {
+    if (!app.ui.showPanels) return SidebarState::Hidden;
+    return app.work.collapsed ? SidebarState::Collapsed : SidebarState::Open;
+}
+
+/// The title row: the scene's name, help and collapse buttons; then the view toggles.
+void sidebarHeader(App& app) {
+    WorkspaceUi& w = app.work;
+    const float button = ImGui::GetFrameHeight();
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("facet");
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s",
+                        std::filesystem::path(app.model.scene.path).filename().string().c_str());
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 2.0f * button - style.ItemSpacing.x);
+    if (ImGui::Button("?", ImVec2(button, button))) w.help = !w.help;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys and mouse (F1 or ?)");
+    ImGui::SameLine();
+    if (ImGui::Button("<<", ImVec2(button, button))) w.collapsed = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Collapse the side bar (Tab hides it)");
+    ImGui::Checkbox("stats (S)", &w.statsOverlay);
+    ImGui::SameLine();
+    ImGui::Checkbox("light (M)", &w.lightMarker);
+    ImGui::SameLine();
+    bool full = w.fullscreen;
+    if (ImGui::Checkbox("fullscreen", &full)) toggleFullscreen(app);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("F11");
+    ImGui::Separator();
+}
+
+void sidebar(App& app) {
+    WorkspaceUi& w = app.work;
+    const Rect& bar = w.layout.sidebar;
+    const float scale = w.scale;
+    const float height = static_cast<float>(bar.h);
+    const int imageShareWidth = static_cast<int>(ImGui::GetIO().DisplaySize.x);
+    const float least = static_cast<float>(clampSidebarWidth(0, imageShareWidth, scale));
+    const float most =
+        std::max(least, static_cast<float>(clampSidebarWidth(1 << 20, imageShareWidth, scale)));
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+    // The height is the window's, the width the user's (dragging the right edge), within limits.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(least, height), ImVec2(most, height));
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(bar.w), height),
+                             w.sidebarSizeSet ? ImGuiCond_Always : ImGuiCond_Once);
+    w.sidebarSizeSet = false;
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+    const bool open = ImGui::Begin("facet##sidebar", nullptr, flags);
+    ImGui::PopStyleVar();
+    if (open) {
+        noteWindow(app, "sidebar");
+        w.sidebarWidth = static_cast<int>(ImGui::GetWindowWidth());
+        sidebarHeader(app);
+        ImGui::PushItemWidth(-130.0f * scale);  // room for the labels on the right
+        if (ImGui::CollapsingHeader("Scene")) scenePanel(app);
+        // Open at start: Render and Camera; Compare alone when the viewer starts comparing two
+        // interpolations; Render and Compare (the renderer, then the numbers) side by side.
+        const bool split = app.options.renderer == "split";
+        auto openIf = [](bool on) {
+            return on ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None;
+        };
+        if (ImGui::CollapsingHeader("Render", openIf(!app.options.compare))) renderPanel(app);
+        if (ImGui::CollapsingHeader("Camera", openIf(!app.options.compare && !split)))
+            cameraPanel(app);
+        if (ImGui::CollapsingHeader("Light and material")) lightPanel(app);
+        if (ImGui::CollapsingHeader("Texture")) texturePanel(app);
+        if (ImGui::CollapsingHeader("Compare", openIf(app.options.compare || split)))
+            comparePanel(app);
+        if (ImGui::CollapsingHeader("Screenshot")) screenshotPanel(app);
+        if (ImGui::CollapsingHeader("Stats")) statsPanel(app);
+        ImGui::PopItemWidth();
+        ImGui::TextDisabled("F1 or ?: every key and mouse action");
+    }
+    ImGui::End();
+}
+
+/// The collapsed side bar: a strip with the button that opens it again.
+void collapsedStrip(App& app) {
+    const Rect& bar = app.work.layout.sidebar;
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(bar.w), static_cast<float>(bar.h)),
+                             ImGuiCond_Always);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2.0f, 4.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (ImGui::Begin("##sidebar-strip", nullptr, flags)) {
+        noteWindow(app, "sidebar");
+        if (ImGui::Button(">>", ImVec2(-1.0f, 0.0f))) app.work.collapsed = false;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open the side bar");
+        if (ImGui::Button("?", ImVec2(-1.0f, 0.0f))) app.work.help = !app.work.help;
+    }
+    ImGui::End();
+    ImGui::PopStyleVar(2);
+}
+
+/// fps and the renderers' times in the image area's top right corner; follows resizes.
+void statsOverlay(App& app) {
+    const Rect& image = app.work.layout.image;
+    const float margin = 8.0f * app.work.scale;
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x + image.w) - margin,
+                                   static_cast<float>(image.y) + margin),
+                            ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.65f);
+    if (ImGui::Begin("##stats-overlay", nullptr, kOverlay)) {
+        noteWindow(app, "stats");
+        const FrameTimes m = app.history.recentMedian(60);
+        ImGui::Text("%.1f fps  %.2f ms", m.total > 0.0 ? 1000.0 / m.total : 0.0, m.total);
+        const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
+        const Camera& c = app.model.scene.camera;
+        if (plan.engine) ImGui::Text("CPU engine %.2f ms", m.render);
+        if (plan.twin) ImGui::Text("OpenGL twin %.2f ms", m.twin);
+        ImGui::TextDisabled("%dx%d  (S hides)", c.width, c.height);
+    }
+    ImGui::End();
+}
+
+/// The notice (a saved screenshot's path) at the bottom of the image area, for a few seconds.
+void noticeOverlay(App& app) {
+    const Notice& n = app.work.notice;
+    if (n.text.empty() || std::chrono::steady_clock::now() >= n.until) return;
+    const Rect& image = app.work.layout.image;
+    const float margin = 12.0f * app.work.scale;
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x) + 0.5f * static_cast<float>(image.w),
+                                   static_cast<float>(image.y + image.h) - margin),
+                            ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (ImGui::Begin("##notice", nullptr, kOverlay)) {
+        noteWindow(app, "notice");
+        ImGui::TextUnformatted(n.text.c_str());
+    }
+    ImGui::End();
+}
+
+/// Every key and mouse action, from the key map (the same table the keys dispatch through).
+void helpOverlay(App& app) {
+    const Rect& image = app.work.layout.image;
+    ImGui::SetNextWindowPos(
+        ImVec2(static_cast<float>(image.x) + 0.5f * static_cast<float>(image.w),
+               static_cast<float>(image.y) + 0.5f * static_cast<float>(image.h)),
+        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.96f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
+    if (ImGui::Begin("Keys and mouse (F1, ? or Esc closes)", &app.work.help, flags)) {
+        noteWindow(app, "help");
+        const ImGuiTableFlags table = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg;
+        if (ImGui::BeginTable("keys", 4, table)) {
+            const auto keys = keyBindings();
+            const auto mouse = mouseBindings();
+            const std::size_t rows = std::max(keys.size(), mouse.size());
+            for (std::size_t i = 0; i < rows; ++i) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                if (i < keys.size())
+                    ImGui::TextColored(ImVec4(1, 0.85f, 0.4f, 1), "%.*s",
+                                       static_cast<int>(keys[i].keys.size()), keys[i].keys.data());
+                ImGui::TableNextColumn();
+                if (i < keys.size())
+                    ImGui::Text("%.*s  ", static_cast<int>(keys[i].what.size()),
+                                keys[i].what.data());
+                ImGui::TableNextColumn();
+                if (i < mouse.size())
+                    ImGui::TextColored(ImVec4(0.5f, 0.8f, 1, 1), "%.*s",
+                                       static_cast<int>(mouse[i].gesture.size()),
+                                       mouse[i].gesture.data());
+                ImGui::TableNextColumn();
+                if (i < mouse.size())
+                    ImGui::Text("%.*s", static_cast<int>(mouse[i].what.size()),
+                                mouse[i].what.data());
+            }
+            ImGui::EndTable();
+        }
+        ImGui::TextDisabled("Every action is also in the side bar (Tab shows it).");
+    }
+    ImGui::End();
+}
+
+}  // namespace
+
+void noteWindow(App& app, const char* name) {
+    const ImVec2 p = ImGui::GetWindowPos();
+    const ImVec2 s = ImGui::GetWindowSize();
+    app.work.drawn[name] = {static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(s.x),
+                            static_cast<int>(s.y)};
+}
+
+void placeFrame(App& app) {
+    WorkspaceUi& w = app.work;
+    if (w.sidebarWidth <= 0) w.sidebarWidth = static_cast<int>(kSidebarWidth * w.scale + 0.5f);
+    w.layout =
+        workspaceLayout(app.fbWidth, app.fbHeight, w.sidebarWidth, sidebarState(app), w.scale);
+    const Rect& image = w.layout.image;
+    const Camera& camera = app.model.prepareFrame(image.w, image.h);
+    app.view = frameRect(w.layout, camera.width, camera.height);
+}
+
+void drawPanels(App& app) {
+    app.work.drawn.clear();
+    drawLightMarker(app);
+    if (planFrame(app.model.rendererChoice, app.compare.enabled).twin || app.compare.enabled)
+        compareOverlay(app);
+    sceneFileEvents(app);
+    errorPopup(app);
+    switch (sidebarState(app)) {
+        case SidebarState::Open:
+            sidebar(app);
+            break;
+        case SidebarState::Collapsed:
+            collapsedStrip(app);
+            break;
+        case SidebarState::Hidden:
+            break;
+    }
+    if (app.work.statsOverlay) statsOverlay(app);
+    accuracyWindow(app);
+    noticeOverlay(app);
+    if (app.work.help) helpOverlay(app);
+}
+
+void showNotice(App& app, const std::string& text) {
+    app.work.notice.text = text;
+    app.work.notice.until = std::chrono::steady_clock::now() +
+                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                std::chrono::duration<double>(kNoticeSeconds));
+}
+
+}  // namespace facet::view

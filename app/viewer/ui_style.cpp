@@ -1,0 +1,51 @@
+// Fonts and widget sizes that follow the monitor's content scale (a 4K laptop screen reports 2:
+// the 13-pixel font becomes 26 pixels, paddings and the side bar twice as wide), and opaque
+// windows and pop-ups (a combo's list over the picture was unreadable at 95 % opacity).
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "viewer_app.hpp"
+
+namespace facet::view {
+
+void applyUiStyle(float scale, bool rebuild) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
+    ImFontConfig font;
+    // The built-in font is a pixel font: whole pixel sizes keep it crisp.
+    font.SizePixels = std::max(8.0f, std::round(13.0f * scale));
+    io.Fonts->AddFontDefault(&font);
+    if (rebuild) {
+        ImGui_ImplOpenGL3_DestroyFontsTexture();
+        ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.Colors[ImGuiCol_WindowBg].w = 1.0f;
+    style.Colors[ImGuiCol_PopupBg].w = 1.0f;
+    style.Colors[ImGuiCol_ChildBg].w = 0.0f;
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+}
+
+float windowUiScale(const App& app) {
+    if (app.options.uiScale > 0.0) return static_cast<float>(app.options.uiScale);
+    float sx = 1.0f, sy = 1.0f;
+    glfwGetWindowContentScale(app.window, &sx, &sy);
+    // Where window coordinates are already scaled points (macOS), ImGui works in points: only
+    // the rest of the content scale applies.
+    int ww = 0, wh = 0, fw = 0, fh = 0;
+    glfwGetWindowSize(app.window, &ww, &wh);
+    glfwGetFramebufferSize(app.window, &fw, &fh);
+    const float framebufferScale =
+        ww > 0 && fw > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
+    const float scale = std::max(sx, sy) / std::max(framebufferScale, 1e-3f);
+    return std::clamp(std::isfinite(scale) ? scale : 1.0f, 0.5f, 4.0f);
+}
+
+}  // namespace facet::view
