@@ -169,7 +169,7 @@ TEST_F(ViewerGui, FFramesTheModelAndHomeGoesBack) {
     const auto state = readState(path("state.txt"));
     Result<Scene> scene = loadScene(kScene);
     ASSERT_TRUE(scene.ok());
-    const view::Sphere sphere = view::boundingSphere(scene->mesh);
+    const view::Sphere sphere = view::boundingSphere(*scene->mesh);
     std::istringstream target(state.at("target"));
     glm::dvec3 t;
     target >> t.x >> t.y >> t.z;

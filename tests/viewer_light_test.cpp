@@ -162,7 +162,7 @@ TEST(Framing, TheBoundingSphereFitsTheNarrowerFieldOfView) {
     m.rotate(200.0, 50.0);
     const double yaw = m.orbit.yaw;
     frameModel(m);
-    const Sphere s = boundingSphere(m.scene.mesh);
+    const Sphere s = boundingSphere(*m.scene.mesh);
     EXPECT_GT(s.radius, 0.0);
     EXPECT_NEAR(glm::length(m.orbit.target - s.centre), 0.0, 1e-12);
     EXPECT_EQ(m.orbit.yaw, yaw);  // the view direction stays
@@ -170,7 +170,7 @@ TEST(Framing, TheBoundingSphereFitsTheNarrowerFieldOfView) {
     EXPECT_NEAR(glm::length(cam.eye - s.centre), framingDistance(s.radius, cam.focal, 720, 1280),
                 1e-9);
     // Every vertex projects inside the frame.
-    for (const glm::vec3& p : m.scene.mesh.positions) {
+    for (const glm::vec3& p : m.scene.mesh->positions) {
         const glm::dvec3 px = projectToPixel(cam, glm::dvec3(p));
         ASSERT_GT(px.z, 0.0);
         EXPECT_GE(px.x, 0.0);
@@ -244,13 +244,13 @@ TEST(FrameStats, TheEngineStagesComeFromTheFrameOfTheirTotal) {
         r.stats.vertexMs = 0.2 * total;
         r.stats.rasterMs = 0.5 * total;
         r.stats.postMs = 0.1 * total;
-        FrameTimes t;
+        StageTimes t;
         recordEngineTimes(r, t);
         t.total = total + 5.0;
         h.push(t);
     }
-    h.push(FrameTimes{});  // a frame in which the engine sat out: not counted
-    const FrameTimes m = h.medianFrameBy(60, &FrameTimes::render);
+    h.push(StageTimes{});  // a frame in which the engine sat out: not counted
+    const StageTimes m = h.medianFrameBy(60, &StageTimes::render);
     EXPECT_EQ(m.render, 20.0);
     EXPECT_DOUBLE_EQ(m.engineRaster, 10.0);
     EXPECT_LE(m.engineClear + m.engineVertex + m.engineRaster + m.enginePost, m.render);
@@ -260,10 +260,10 @@ TEST(FrameStats, TheEngineStagesComeFromTheFrameOfTheirTotal) {
     both.renderMs = 9.0;
     both.stats.rasterMs = 4.0;
     both.rightStats.rasterMs = 4.5;
-    FrameTimes t;
+    StageTimes t;
     recordEngineTimes(both, t);
     EXPECT_EQ(t.engineRaster, 8.5);
-    EXPECT_EQ(FrameHistory{}.medianFrameBy(60, &FrameTimes::render).render, 0.0);
+    EXPECT_EQ(FrameHistory{}.medianFrameBy(60, &StageTimes::render).render, 0.0);
 }
 
 TEST(FrameStats, TheRealEnginesStagesNeverExceedItsTotal) {

@@ -148,7 +148,7 @@ TEST(KeyMap, EveryKeyInTheHelpDispatchesToItsAction) {
 TEST(KeyMap, DocumentActionsChangeTheDocumentAndTheOthersAreLeftToTheWindow) {
     ViewerModel m;
     ASSERT_FALSE(m.load(kDefaultScene));
-    CompareView compare;
+    CompareSettings compare;
     EXPECT_TRUE(applyDocumentAction(Action::ModeWireframe, m, compare));
     EXPECT_EQ(m.settings.mode, DrawMode::Wireframe);
     EXPECT_TRUE(applyDocumentAction(Action::ShaderDepth, m, compare));

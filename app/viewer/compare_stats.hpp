@@ -7,7 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "facet/framebuffer.hpp"
-#include "facet/image_diff.hpp"
+#include "facet/evaluation/image_diff.hpp"
 
 namespace facet::view {
 

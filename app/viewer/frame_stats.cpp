@@ -54,8 +54,8 @@ StageTimes FrameHistory::recentMedian(std::size_t count) const {
     return mediansFrom(frames, frames.size() > count ? frames.size() - count : 0);
 }
 
-FrameTimes FrameHistory::medianFrameBy(std::size_t count, double FrameTimes::*field) const {
-    std::vector<const FrameTimes*> ran;
+StageTimes FrameHistory::medianFrameBy(std::size_t count, double StageTimes::*field) const {
+    std::vector<const StageTimes*> ran;
     const std::size_t begin = frames.size() > count ? frames.size() - count : 0;
     for (std::size_t i = begin; i < frames.size(); ++i)
         if (frames[i].*field > 0.0) ran.push_back(&frames[i]);
@@ -63,7 +63,7 @@ FrameTimes FrameHistory::medianFrameBy(std::size_t count, double FrameTimes::*fi
     const auto mid = ran.begin() + static_cast<std::ptrdiff_t>((ran.size() - 1) / 2);
     std::nth_element(
         ran.begin(), mid, ran.end(),
-        [field](const FrameTimes* a, const FrameTimes* b) { return a->*field < b->*field; });
+        [field](const StageTimes* a, const StageTimes* b) { return a->*field < b->*field; });
     return **mid;
 }
 

@@ -35,7 +35,7 @@ void frameSphere(Orbit& orbit, const Sphere& sphere, const Camera& frame) {
 }
 
 void frameModel(ViewerModel& model) {
-    frameSphere(model.orbit, boundingSphere(model.scene.mesh), model.scene.camera);
+    frameSphere(model.orbit, boundingSphere(*model.scene.mesh), model.scene.camera);
     model.orbitMoved = true;
 }
 

@@ -92,7 +92,7 @@ std::string_view keysFor(Action action) {
     return {};
 }
 
-bool applyDocumentAction(Action action, ViewerModel& model, CompareView& compare) {
+bool applyDocumentAction(Action action, ViewerModel& model, CompareSettings& compare) {
     RenderSettings& s = model.settings;
     switch (action) {
         case FrameModel:

@@ -11,7 +11,7 @@
 namespace facet::view {
 
 struct ViewerModel;
-struct CompareView;
+struct CompareSettings;
 
 /// What a key (or a button doing the same) asks for.
 enum class Action {
@@ -77,6 +77,6 @@ std::string_view keysFor(Action action);
 /// Applies the actions that edit only the document (framing, camera, draw mode, shader,
 /// lighting, interpolation, Compare, normals, culling, renderer); returns false for the others
 /// (help, quit, panels, fullscreen, screenshot, overlays), which the window handles.
-bool applyDocumentAction(Action action, ViewerModel& model, CompareView& compare);
+bool applyDocumentAction(Action action, ViewerModel& model, CompareSettings& compare);
 
 }  // namespace facet::view

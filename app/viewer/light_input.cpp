@@ -40,7 +40,7 @@ glm::dvec2 placeOf(const App& app, const LightMarker& m) {
 }  // namespace
 
 glm::dvec4& lightPosition(App& app) {
-    return app.model.scene.light.position;
+    return app.model.scene.lighting.light.position;
 }
 
 const glm::dvec4& lightPosition(const App& app) {

@@ -44,10 +44,11 @@ void sideLabels(const App& app, std::string& left, std::string& right) {
 /// The heat map's scale: a viridis bar from 0 to the brightest error with its numbers, at the
 /// top left of the frame (the stats box has the top right, the labels the bottom).
 void colourBar(App& app) {
-    const CompareView& c = app.compare;
+    const CompareSettings& c = app.compare;
+    const CompareView& sides = app.sides;
     const Rect& v = app.view;
     const float s = app.work.scale;
-    const int top = heatTop(c.heatScale, c.diff.maxError);
+    const int top = heatTop(c.heatScale, sides.diff.maxError);
     const char* caption = "error, 8-bit steps";
     const char* note = c.heatScale ? "black: equal; top: heat scale" : "black: equal; top: max";
     const float w =

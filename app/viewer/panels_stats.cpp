@@ -49,7 +49,7 @@ void statsPanel(App& app) {
         if (plan.engine) {
             // One frame's total with its own stages (the frame of median engine time), so the
             // parts add up to the whole; what the stages leave is set-up and hand-over.
-            const FrameTimes e = app.history.medianFrameBy(60, &FrameTimes::render);
+            const StageTimes e = app.history.medianFrameBy(60, &StageTimes::render);
             row("CPU engine render", e.render);
             row("  clear", e.engineClear);
             row("  vertices", e.engineVertex);
@@ -61,7 +61,7 @@ void statsPanel(App& app) {
         if (plan.twin) {
             // Like the engine's time, the twin's ends with the picture in memory: its draw is
             // timed on the CPU clock up to glFinish, then the readback.
-            const FrameTimes t = app.history.medianFrameBy(60, &FrameTimes::twin);
+            const StageTimes t = app.history.medianFrameBy(60, &StageTimes::twin);
             row("OpenGL twin render", t.twin);
             row("  prepare + upload", t.twinUpload);
             row("  draw (to glFinish)", t.twinDraw);

@@ -30,7 +30,7 @@ void RenderWorker::submit(const Scene& scene, const RenderSettings& settings,
     cv_.notify_all();
 }
 
-void recordEngineTimes(const RenderResult& r, FrameTimes& t) {
+void recordEngineTimes(const RenderResult& r, StageTimes& t) {
     t.render = r.renderMs;
     t.compare = r.compareMs;
     const RenderStats none;

@@ -32,7 +32,7 @@ struct RenderResult {
 
 /// Copies a job's times into a frame's: the engine's total, its stages (both sides summed in
 /// Compare) and the comparison's.
-void recordEngineTimes(const RenderResult& result, FrameTimes& times);
+void recordEngineTimes(const RenderResult& result, StageTimes& times);
 
 /// Renders submitted frames on its own thread, one job at a time.
 class RenderWorker {

@@ -132,7 +132,7 @@ void statsOverlay(App& app) {
     ImGui::SetNextWindowBgAlpha(0.65f);
     if (ImGui::Begin("##stats-overlay", nullptr, kOverlay)) {
         noteWindow(app, "stats");
-        const FrameTimes m = app.history.recentMedian(60);
+        const StageTimes m = app.history.recentMedian(60);
         ImGui::Text("%.1f fps  %.2f ms", m.total > 0.0 ? 1000.0 / m.total : 0.0, m.total);
         const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
         const Camera& c = app.model.scene.camera;
