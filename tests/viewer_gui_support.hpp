@@ -155,9 +155,8 @@ class ViewerGui : public ::testing::Test {
     /// Drives the viewer with xdotool through tests/viewer_drive.sh.
     Outcome drive(const std::string& scenario, const std::string& args = "--size " + kWindow1280,
                   const std::string& env = "") {
-        return run("env " + configEnv() + " " + env + " timeout 90 " + kXvfb + "sh " +
-                   kDriver + " " + scenario + " " + dir.string() + " " + kViewer + " --no-vsync " +
-                   args);
+        return run("env " + configEnv() + " " + env + " timeout 90 " + kXvfb + "sh " + kDriver +
+                   " " + scenario + " " + dir.string() + " " + kViewer + " --no-vsync " + args);
     }
 
     /// Drives the viewer through `steps` (viewer_drive.sh's commands, ';'-separated); `term`

@@ -6,8 +6,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "facet/framebuffer.hpp"
 #include "facet/evaluation/image_diff.hpp"
+#include "facet/framebuffer.hpp"
 
 namespace facet::view {
 
