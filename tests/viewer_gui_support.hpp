@@ -155,7 +155,7 @@ class ViewerGui : public ::testing::Test {
     /// Drives the viewer with xdotool through tests/viewer_drive.sh.
     Outcome drive(const std::string& scenario, const std::string& args = "--size " + kWindow1280,
                   const std::string& env = "") {
-        return run("env " + configEnv() + " " + env + " timeout 90 " + kXvfb + "sh " + kDriver +
+        return run("env " + env + " " + configEnv() + " timeout 90 " + kXvfb + "sh " + kDriver +
                    " " + scenario + " " + dir.string() + " " + kViewer + " --no-vsync " + args);
     }
 

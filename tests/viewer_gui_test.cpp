@@ -219,7 +219,7 @@ TEST_F(ViewerGui, CtrlSSavesABareModelAfterOrbitingAsASceneThatRendersTheFrame) 
     REQUIRE_XDOTOOL();
     const std::string teapot = std::string(FACET_SHARED_DIR) + "/data/models/teapot.obj";
     if (!fs::exists(teapot)) GTEST_SKIP() << teapot << " not found";
-    const Outcome r = drive("save", "--size 1280x720 " + teapot);
+    const Outcome r = drive("save", "--size " + kWindow1280 + " " + teapot);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     ASSERT_TRUE(fs::exists(path("teapot.scene"))) << r.out;
     const auto state = readState(path("state.txt"));
