@@ -59,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     static const std::shared_ptr<const facet::Texture> texture = checker();
     facet::Scene scene;
-    scene.mesh = std::make_shared<const Mesh>(std::move(*mesh));
+    scene.mesh = std::make_shared<const facet::Mesh>(std::move(*mesh));
     scene.texture = texture;
     scene.camera.width = 1 + data[0] % 64;
     scene.camera.height = 1 + data[1] % 64;
