@@ -1,10 +1,12 @@
 // Bounded resources (limits.hpp): frames and meshes over the memory limits are refused with a
 // message before allocation, files over the size limit or that are not regular files are
-// refused without reading, an OBJ face of thousands of corners costs one pass over its line, and
-// the OFF parser's fuzz finding stays fixed.
+// refused without reading, an OBJ face of thousands of corners loads as the engine's fan in linear
+// time, and the OFF parser's fuzz finding stays fixed.
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -140,34 +142,109 @@ TEST(FileLimit, DevicesAndPipesAreRefused) {
     EXPECT_TRUE(contains(refused.error().message, "the limit is")) << refused.error().what();
 }
 
-// tinyobjloader keeps a face's corner count in 8 bits and its ear-clipper is quadratic; the line
-// check refuses a 5,000-corner face before either sees it, naming the line, and the engine fans
-// the largest face tinyobjloader can hold.
-TEST(ObjLimit, HugePolygonsAreBoundedAndFanned) {
-    const TempDir dir;
-    auto polygon = [](int corners) {
-        std::string text;
-        for (int i = 0; i < corners; ++i) {
-            const double a = 6.283185307179586 * i / corners;
-            text.append("v ").append(std::to_string(std::cos(a)));
-            text.append(" ").append(std::to_string(std::sin(a))).append(" 0\n");
-        }
-        text += "f";
-        for (int i = 1; i <= corners; ++i) text.append(" ").append(std::to_string(i));
-        return text.append("\n");
-    };
-    const Result<Mesh> huge = loadObj(dir.file("huge.obj", polygon(5000)));
-    ASSERT_FALSE(huge.ok());
-    EXPECT_EQ(huge.error().loc.line, 5001);
-    EXPECT_TRUE(contains(huge.error().message, "a face has 5000 vertices; at most 255"))
-        << huge.error().what();
+namespace {
 
-    const Result<Mesh> largest = loadObj(dir.file("largest.obj", polygon(255)));
-    ASSERT_TRUE(largest.ok()) << largest.error().what();
-    EXPECT_EQ(largest->vertexCount(), 255u);
-    EXPECT_EQ(largest->triangleCount(), 253u);
-    EXPECT_EQ(largest->indices[3 * 252 + 2],
-              254u);  // the fan's last triangle ends at the last corner
+// A regular polygon of `corners` vertices as OBJ lines (lines 1 to `corners`), with
+// `corners` texture coordinates and one normal when `textured`, then its face on the next line;
+// corner i uses vt corners + 1 - i (reversed, so that a lost or shifted triplet shows).
+std::string objPolygon(int corners, bool textured = false) {
+    std::string text;
+    for (int i = 0; i < corners; ++i) {
+        const double a = 6.283185307179586 * i / corners;
+        text.append("v ").append(std::to_string(std::cos(a)));
+        text.append(" ").append(std::to_string(std::sin(a))).append(" 0\n");
+    }
+    if (textured) {
+        for (int i = 0; i < corners; ++i) {
+            text.append("vt ").append(std::to_string(i)).append(" 0\n");
+        }
+        text += "vn 0 0 2\n";
+    }
+    text += "f";
+    for (int i = 1; i <= corners; ++i) {
+        text.append(" ").append(std::to_string(i));
+        if (textured) text.append("/").append(std::to_string(corners + 1 - i)).append("/1");
+    }
+    return text.append("\n");
+}
+
+}  // namespace
+
+// tinyobjloader keeps a face's corner count in 8 bits; the loader hands it a longer face as
+// several that share the first corner, and the mesh is the fan from the first corner that a
+// short polygon gets: triangle k is (0, k + 1, k + 2), same order and winding.
+TEST(ObjLimit, FiveThousandCornerFaceIsTheFan) {
+    const TempDir dir;
+    const Result<Mesh> mesh = loadObj(dir.file("huge.obj", objPolygon(5000)));
+    ASSERT_TRUE(mesh.ok()) << mesh.error().what();
+    ASSERT_EQ(mesh->vertexCount(), 5000u);
+    ASSERT_EQ(mesh->triangleCount(), 4998u);
+    for (std::uint32_t k = 0; k < 4998; ++k) {
+        ASSERT_EQ(mesh->indices[3 * k], 0u) << "triangle " << k;
+        ASSERT_EQ(mesh->indices[3 * k + 1], k + 1) << "triangle " << k;
+        ASSERT_EQ(mesh->indices[3 * k + 2], k + 2) << "triangle " << k;
+    }
+    // Corners keep their positions: vertex i is the polygon's corner i.
+    EXPECT_NEAR(mesh->positions[2500].x, -1.0f, 1e-6f);
+    EXPECT_NEAR(mesh->positions[4999].y, std::sin(6.283185307179586 * 4999 / 5000), 2e-6);
+}
+
+// The split keeps each corner's v/vt/vn triplet: corner i has texture coordinate n - 1 - i
+// (stored with v flipped) and the one normal, also across the pieces' shared corners.
+TEST(ObjLimit, SplitFaceKeepsCornerTriplets) {
+    const TempDir dir;
+    const int n = 600;  // three pieces: 255, 255 and 94 corners
+    const Result<Mesh> mesh = loadObj(dir.file("textured.obj", objPolygon(n, true)));
+    ASSERT_TRUE(mesh.ok()) << mesh.error().what();
+    ASSERT_EQ(mesh->vertexCount(), static_cast<std::size_t>(n));
+    ASSERT_EQ(mesh->triangleCount(), static_cast<std::size_t>(n - 2));
+    ASSERT_EQ(mesh->uvs.size(), static_cast<std::size_t>(n));
+    ASSERT_EQ(mesh->normals.size(), static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        ASSERT_EQ(mesh->uvs[static_cast<std::size_t>(i)], glm::vec2(n - 1 - i, 1.0f)) << i;
+        ASSERT_EQ(mesh->normals[static_cast<std::size_t>(i)], glm::vec3(0, 0, 1)) << i;
+    }
+    EXPECT_EQ(mesh->indices[3 * 253 + 1], 254u);  // the second piece starts at corner 254
+    EXPECT_EQ(mesh->indices[3 * (n - 3) + 2], static_cast<std::uint32_t>(n - 1));
+}
+
+// Errors found after a split face name the file's lines: in the split face itself (the last
+// piece), on the next face line (counted from the loader's face list), and on a line
+// tinyobjloader refuses (its own line count, over the longer text it read).
+TEST(ObjLimit, LineNumbersSurviveASplitFace) {
+    const TempDir dir;
+    std::string lastCornerBad = objPolygon(1000);
+    lastCornerBad.replace(lastCornerBad.rfind(" 1000"), 5, " 1001");
+    const Result<Mesh> inFace = loadObj(dir.file("in_face.obj", lastCornerBad));
+    ASSERT_FALSE(inFace.ok());
+    EXPECT_EQ(inFace.error().loc.line, 1001) << inFace.error().what();
+    EXPECT_TRUE(contains(inFace.error().message, "refers to vertex 1001")) << inFace.error().what();
+
+    const Result<Mesh> after =
+        loadObj(dir.file("after.obj", objPolygon(1000) + "# fine\nf 1 2 3\nf 1 2 2000\n"));
+    ASSERT_FALSE(after.ok());
+    EXPECT_EQ(after.error().loc.line, 1004) << after.error().what();
+
+    const Result<Mesh> parser =
+        loadObj(dir.file("parser.obj", objPolygon(1000) + "f 1 2 3\nl 1 0\n"));
+    ASSERT_FALSE(parser.ok());
+    EXPECT_EQ(parser.error().loc.line, 1003) << parser.error().what();
+    EXPECT_TRUE(contains(parser.error().message, "cannot parse OBJ: Failed parse `l' line"))
+        << parser.error().what();
+}
+
+// Beyond kMaxObjFaceCorners a face is refused from its line's token count, naming the line.
+TEST(ObjLimit, AbsurdFaceIsRefusedNamingItsLine) {
+    const TempDir dir;
+    std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+    for (std::size_t i = 0; i <= kMaxObjFaceCorners; ++i) text += " 1";
+    const Result<Mesh> mesh = loadObj(dir.file("absurd.obj", text + "\n"));
+    ASSERT_FALSE(mesh.ok());
+    EXPECT_EQ(mesh.error().loc.line, 4);
+    EXPECT_TRUE(contains(mesh.error().message,
+                         "a face has " + std::to_string(kMaxObjFaceCorners + 1) +
+                             " vertices; at most " + std::to_string(kMaxObjFaceCorners)))
+        << mesh.error().what();
 }
 
 // Fuzz finding: a colour of 4.4e35 was cast to int64_t (undefined behaviour) to test whether it

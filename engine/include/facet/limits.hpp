@@ -32,8 +32,9 @@ inline constexpr std::uint64_t kBytesPerVertex = 72;
 /// Bytes a triangle costs: its three indices.
 inline constexpr std::uint64_t kBytesPerTriangle = 12;
 
-/// Most corners of one OBJ face: tinyobjloader keeps the count in 8 bits.
-inline constexpr std::size_t kMaxObjFaceCorners = 255;
+/// Most corners of one OBJ face. Fanning costs linear time, so this only refuses the absurd:
+/// modelled polygons (disc caps, outlines) have at most a few thousand corners.
+inline constexpr std::size_t kMaxObjFaceCorners = 65536;
 
 /// Most scans a progressive JPEG may have. Each costs a pass over the image, so a file of
 /// thousands of tiny scans could keep the decoder busy for minutes; encoders write about 10

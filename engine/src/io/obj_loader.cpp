@@ -7,6 +7,10 @@
 // without triangulating, and the polygons are fanned here, as OFF polygons are, after every index
 // has been checked. Material files are read through MtlReader, under the same size limit.
 //
+// tinyobjloader keeps a face's corner count in an unsigned char, so a face of more than 255
+// corners is handed to it as several faces that share the first corner and form together the
+// same fan (same triangles, order and winding); each keeps the line of the face it came from.
+//
 // A map_Kd texture is resolved relative to the .obj's folder and kept even when that file is
 // missing: the texture loader then reports the path it could not open, which tells the user more
 // than a texture that silently disappeared.
@@ -34,12 +38,53 @@ namespace facet {
 namespace {
 
 // tinyobjloader stores a face's corner count in an unsigned char.
-constexpr std::size_t maxFaceCorners = kMaxObjFaceCorners;
+constexpr std::size_t tinyObjMaxCorners = 255;
 
-// What the line check learned: the line of every face, in the order tinyobjloader lists faces.
+// A face line the line check wrote as `extra` + 1 lines of the text tinyobjloader reads.
+struct SplitFace {
+    int line = 0;
+    int extra = 0;
+    bool operator==(const SplitFace&) const = default;
+};
+
+// What the line check learned: the line of every face, in the order tinyobjloader lists faces,
+// and, when some face had more than tinyObjMaxCorners corners, the text to give tinyobjloader
+// instead of the file's, with those faces split.
 struct ObjLines {
     std::vector<int> faceLines;
+    std::string splitText;
+    std::vector<SplitFace> splits;
+
+    // The file's line for line `line` of the text tinyobjloader read.
+    int originalLine(int line) const {
+        int shift = 0;
+        for (const SplitFace& split : splits) {
+            if (line < split.line + shift) break;
+            if (line <= split.line + shift + split.extra) return split.line;
+            shift += split.extra;
+        }
+        return line - shift;
+    }
 };
+
+// Appends `corners` (a face's corner tokens) to `out` as faces of at most tinyObjMaxCorners
+// corners: c0 c1 .. c254, then c0 c254 c255 .., each starting at the first corner and at the
+// last corner of the one before, so that fanning each from its first corner gives the fan of the
+// whole face. Returns how many faces it wrote.
+int appendSplitFace(std::string& out, const std::string_view* corners, std::size_t count) {
+    int faces = 0;
+    std::size_t begin = 1;
+    while (begin < count - 1) {
+        const std::size_t end = std::min(begin + tinyObjMaxCorners - 2, count - 1);
+        if (faces > 0) out += '\n';
+        out += "f ";
+        out += corners[0];
+        for (std::size_t i = begin; i <= end; ++i) out.append(" ").append(corners[i]);
+        ++faces;
+        begin = end;
+    }
+    return faces;
+}
 
 // Opens the .mtl files an OBJ names as tinyobjloader's own reader does (relative to the OBJ's
 // folder), but refuses what is not a regular file or exceeds kMaxFileBytes: "mtllib /dev/zero"
@@ -122,6 +167,7 @@ std::optional<std::string> checkCorner(std::string_view corner) {
 Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
     ObjLines result;
     std::uint64_t positions = 0, texcoords = 0, corners = 0, triangles = 0;
+    std::size_t copied = 0;  // bytes of `text` already in result.splitText
     text::LineReader lines(text::skipBom(text));
     std::vector<std::string_view> tokens;
     std::string_view line;
@@ -148,15 +194,26 @@ Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
         } else if (keyword == "f") {
             const std::size_t n = tokens.size() - 1;
             if (n < 3) return fail("a face needs at least 3 vertices, got " + std::to_string(n));
-            // Checked before the corners, so a face of thousands costs one pass over its line.
-            if (n > maxFaceCorners) {
+            // Checked before the corners, so an absurd face costs one pass over its line.
+            if (n > kMaxObjFaceCorners) {
                 return fail("a face has " + std::to_string(n) + " vertices; at most " +
-                            std::to_string(maxFaceCorners) + " are supported");
+                            std::to_string(kMaxObjFaceCorners) + " are supported");
             }
             for (std::size_t i = 1; i < tokens.size(); ++i) {
                 if (auto message = checkCorner(tokens[i])) return fail(*message);
             }
-            result.faceLines.push_back(number);
+            if (n <= tinyObjMaxCorners) {
+                result.faceLines.push_back(number);
+            } else {
+                // The text up to this line as it is, then the face as several.
+                const auto lineStart = static_cast<std::size_t>(line.data() - text.data());
+                result.splitText.append(text, copied, lineStart - copied);
+                const int faces = appendSplitFace(result.splitText, &tokens[1], n);
+                copied = lineStart + line.size();
+                result.faceLines.insert(result.faceLines.end(), static_cast<std::size_t>(faces),
+                                        number);
+                result.splits.push_back({number, faces - 1});
+            }
             corners += n;
             triangles += n - 2;
         }
@@ -164,6 +221,7 @@ Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
     // One engine vertex per distinct (position, texcoord) pair a corner uses.
     const std::uint64_t vertices = std::min(corners, positions * (texcoords + 1));
     if (auto problem = meshMemoryProblem(vertices, triangles)) return Error{{path, 0}, *problem};
+    if (!result.splits.empty()) result.splitText.append(text, copied);
     return result;
 }
 
@@ -246,7 +304,8 @@ Result<Mesh> loadObj(const std::string& path) {
     std::string warn, err;
     MtlReader mtl(std::filesystem::path(path).parent_path());
     {
-        std::istringstream stream(std::move(*text));
+        std::istringstream stream(lines->splits.empty() ? std::move(*text)
+                                                        : std::move(lines->splitText));
         // triangulate off: fanned below, after the indices are known to be valid; vertex colours
         // without a fallback, so that attrib.colors stays empty when the file has none.
         const bool parsed = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &stream,
@@ -254,7 +313,8 @@ Result<Mesh> loadObj(const std::string& path) {
                                              /*default_vcols_fallback=*/false);
         if (mtl.problem()) return *mtl.problem();
         if (!parsed) {
-            return Error{{path, lineInMessage(err)}, "cannot parse OBJ: " + firstLine(err)};
+            return Error{{path, lines->originalLine(lineInMessage(err))},
+                         "cannot parse OBJ: " + firstLine(err)};
         }
     }
     const auto positionCount = static_cast<std::int64_t>(attrib.vertices.size() / 3);
