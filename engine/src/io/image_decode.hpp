@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "facet/error.hpp"
@@ -32,6 +33,21 @@ struct DecodeLimits {
 
 /// "image is WxH pixels; a texture side must be 1 to N".
 Error imageSizeError(const std::string& name, std::uint64_t w, std::uint64_t h, int maxSide);
+
+/// How a libpng or libjpeg decode ended, as its callbacks and checks recorded it.
+struct DecodeEnd {
+    bool finished = false;                ///< the whole image was decoded
+    bool headerRead = false;              ///< a failure before it means the header is damaged
+    bool sizeRefused = false;             ///< the header's size is outside DecodeLimits::maxSide
+    std::uint64_t width = 0, height = 0;  ///< the header's size, once read
+    std::string message;                  ///< the library's reason, or ours
+};
+
+/// The decoded `image`, or the error `end` describes, in the same words for PNG and JPEG:
+/// `format` is "PNG" or "JPEG", `library` the decoder named in the message.
+Result<DecodedImage> decodeResult(const DecodeEnd& end, DecodedImage&& image,
+                                  const std::string& name, std::string_view format,
+                                  std::string_view library, int maxSide);
 
 /// Decodes a PNG (the caller has seen its signature).
 Result<DecodedImage> decodePng(std::span<const unsigned char> bytes, const std::string& name,

@@ -21,9 +21,7 @@ struct JpegJob {
     jpeg_progress_mgr progress{};
     std::jmp_buf jump{};
     jpeg_decompress_struct cinfo{};
-    std::string message;
-    bool headerRead = false;
-    bool sizeRefused = false;
+    DecodeEnd end;
     DecodeLimits limits;
     DecodedImage image;
     std::vector<unsigned char> row;  // one scanline in the decoder's output layout
@@ -37,7 +35,7 @@ JpegJob& jobOf(j_common_ptr cinfo) {
     char text[JMSG_LENGTH_MAX] = {};
     cinfo->err->format_message(cinfo, text);
     JpegJob& job = jobOf(cinfo);
-    job.message = text;
+    job.end.message = text;
     std::longjmp(job.jump, 1);
 }
 
@@ -47,7 +45,7 @@ void onProgress(j_common_ptr cinfo) {
     const auto* d = reinterpret_cast<j_decompress_ptr>(cinfo);
     if (d->input_scan_number > kMaxJpegScans) {
         JpegJob& job = jobOf(cinfo);
-        job.message = "more than " + std::to_string(kMaxJpegScans) + " progressive scans";
+        job.end.message = "more than " + std::to_string(kMaxJpegScans) + " progressive scans";
         std::longjmp(job.jump, 1);
     }
 }
@@ -58,7 +56,7 @@ unsigned char blinn(unsigned x, unsigned y) {
     return static_cast<unsigned char>((t + (t >> 8)) >> 8);
 }
 
-// The decode proper; false after a libjpeg error (the reason is in job.message).
+// The decode proper; false after a libjpeg error (the reason is in job.end).
 bool runJpeg(std::span<const unsigned char> bytes, JpegJob& job) {
     if (setjmp(job.jump)) return false;
     jpeg_decompress_struct& d = job.cinfo;
@@ -66,15 +64,17 @@ bool runJpeg(std::span<const unsigned char> bytes, JpegJob& job) {
     d.progress = &job.progress;
     jpeg_mem_src(&d, bytes.data(), static_cast<unsigned long>(bytes.size()));
     jpeg_read_header(&d, TRUE);
-    job.headerRead = true;
-    job.image.width = static_cast<int>(d.image_width);
-    job.image.height = static_cast<int>(d.image_height);
+    job.end.headerRead = true;
+    job.end.width = d.image_width;
+    job.end.height = d.image_height;
     const auto maxSide = static_cast<JDIMENSION>(job.limits.maxSide);
     if (d.image_width < 1 || d.image_height < 1 || d.image_width > maxSide ||
         d.image_height > maxSide) {
-        job.sizeRefused = true;
+        job.end.sizeRefused = true;
         return false;
     }
+    job.image.width = static_cast<int>(d.image_width);
+    job.image.height = static_cast<int>(d.image_height);
     const bool cmyk = d.jpeg_color_space == JCS_CMYK || d.jpeg_color_space == JCS_YCCK;
     d.out_color_space = cmyk ? JCS_CMYK : JCS_EXT_RGBA;
     d.dct_method = JDCT_ISLOW;
@@ -82,7 +82,7 @@ bool runJpeg(std::span<const unsigned char> bytes, JpegJob& job) {
     jpeg_start_decompress(&d);
     if (d.output_components != 4 || d.output_width != d.image_width ||
         d.output_height != d.image_height) {
-        job.message = "unexpected output layout";
+        job.end.message = "unexpected output layout";
         return false;
     }
 
@@ -95,7 +95,7 @@ bool runJpeg(std::span<const unsigned char> bytes, JpegJob& job) {
         JSAMPROW target =
             cmyk ? job.row.data() : reinterpret_cast<JSAMPROW>(job.image.pixels.data() + y * w);
         if (jpeg_read_scanlines(&d, &target, 1) != 1) {
-            job.message = "the decoder stopped before the last row";
+            job.end.message = "the decoder stopped before the last row";
             return false;
         }
         if (cmyk) {
@@ -122,30 +122,14 @@ Result<DecodedImage> decodeJpeg(std::span<const unsigned char> bytes, const std:
     job.errors.error_exit = onError;
     job.errors.emit_message = onMessage;
     job.progress.progress_monitor = onProgress;
-    bool ok = false;
     try {
-        ok = runJpeg(bytes, job);
+        job.end.finished = runJpeg(bytes, job);
     } catch (...) {  // std::bad_alloc from the pixel buffer: free libjpeg's state first
         jpeg_destroy_decompress(&job.cinfo);
         throw;
     }
     jpeg_destroy_decompress(&job.cinfo);
-    if (job.sizeRefused) {
-        return imageSizeError(name, static_cast<std::uint64_t>(job.image.width),
-                              static_cast<std::uint64_t>(job.image.height), limits.maxSide);
-    }
-    if (!ok && !job.headerRead) {
-        return Error{
-            {name, 0},
-            "not a readable JPEG image: its header is damaged (libjpeg: " + job.message + ")"};
-    }
-    if (!ok) {
-        return Error{{name, 0},
-                     "cannot decode the image, it may be damaged or truncated "
-                     "(libjpeg: " +
-                         job.message + ")"};
-    }
-    return std::move(job.image);
+    return decodeResult(job.end, std::move(job.image), name, "JPEG", "libjpeg", limits.maxSide);
 }
 
 }  // namespace facet::detail

@@ -20,9 +20,7 @@ struct PngJob {
     std::span<const unsigned char> bytes;
     std::size_t pos = 0;
     DecodeLimits limits;
-    std::string message;       // libpng's reason, or ours
-    bool headerRead = false;   // an error before it means the header is damaged
-    bool sizeRefused = false;  // the header's size is outside the limit
+    DecodeEnd end;
     std::uint32_t width = 0, height = 0;
     DecodedImage image;
     std::vector<png_bytep> rows;
@@ -33,7 +31,7 @@ PngJob& jobOf(png_structp png) {
 }
 
 [[noreturn]] void onError(png_structp png, png_const_charp message) {
-    jobOf(png).message = message ? message : "unknown error";
+    jobOf(png).end.message = message ? message : "unknown error";
     png_longjmp(png, 1);
 }
 
@@ -46,7 +44,7 @@ void readBytes(png_structp png, png_bytep out, png_size_t count) {
     job.pos += count;
 }
 
-// The decode proper; false after a libpng error (the reason is in job.message).
+// The decode proper; false after a libpng error (the reason is in job.end).
 bool runPng(png_structp png, png_infop info, PngJob& job) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_set_read_fn(png, &job, readBytes);
@@ -54,12 +52,14 @@ bool runPng(png_structp png, png_infop info, PngJob& job) {
                         static_cast<png_uint_32>(job.limits.maxSide));
     if (!job.limits.checkPngCrc) png_set_crc_action(png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
     png_read_info(png, info);
-    job.headerRead = true;
+    job.end.headerRead = true;
     int depth = 0, color = 0;
     png_get_IHDR(png, info, &job.width, &job.height, &depth, &color, nullptr, nullptr, nullptr);
+    job.end.width = job.width;
+    job.end.height = job.height;
     const auto maxSide = static_cast<std::uint32_t>(job.limits.maxSide);
     if (job.width < 1 || job.height < 1 || job.width > maxSide || job.height > maxSide) {
-        job.sizeRefused = true;
+        job.end.sizeRefused = true;
         return false;
     }
 
@@ -104,27 +104,14 @@ Result<DecodedImage> decodePng(std::span<const unsigned char> bytes, const std::
         png_destroy_read_struct(&png, nullptr, nullptr);
         throw std::bad_alloc();
     }
-    bool ok = false;
     try {
-        ok = runPng(png, info, job);
+        job.end.finished = runPng(png, info, job);
     } catch (...) {  // std::bad_alloc from the pixel buffer: free libpng's state first
         png_destroy_read_struct(&png, &info, nullptr);
         throw;
     }
     png_destroy_read_struct(&png, &info, nullptr);
-    if (job.sizeRefused) return imageSizeError(name, job.width, job.height, limits.maxSide);
-    if (!ok && !job.headerRead) {
-        return Error{
-            {name, 0},
-            "not a readable PNG image: its header is damaged (libpng: " + job.message + ")"};
-    }
-    if (!ok) {
-        return Error{{name, 0},
-                     "cannot decode the image, it may be damaged or truncated "
-                     "(libpng: " +
-                         job.message + ")"};
-    }
-    return std::move(job.image);
+    return decodeResult(job.end, std::move(job.image), name, "PNG", "libpng", limits.maxSide);
 }
 
 }  // namespace facet::detail

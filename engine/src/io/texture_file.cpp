@@ -96,6 +96,22 @@ Error imageSizeError(const std::string& name, std::uint64_t w, std::uint64_t h, 
                                " pixels; a texture side must be 1 to " + std::to_string(maxSide));
 }
 
+Result<DecodedImage> decodeResult(const DecodeEnd& end, DecodedImage&& image,
+                                  const std::string& name, std::string_view format,
+                                  std::string_view library, int maxSide) {
+    if (end.sizeRefused) return imageSizeError(name, end.width, end.height, maxSide);
+    const std::string reason = " (" + std::string(library) + ": " + end.message + ")";
+    if (!end.finished && !end.headerRead) {
+        return Error{
+            {name, 0},
+            "not a readable " + std::string(format) + " image: its header is damaged" + reason};
+    }
+    if (!end.finished) {
+        return Error{{name, 0}, "cannot decode the image, it may be damaged or truncated" + reason};
+    }
+    return std::move(image);
+}
+
 Result<Texture> decodeTexture(std::span<const unsigned char> bytes, const std::string& name,
                               const DecodeLimits& limits) {
     static constexpr unsigned char kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
