@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Runs each fuzz target for SECONDS on its seed corpus (fuzz/corpus/<target>/), keeping what it
 # learns in BUILD/fuzz-corpus/<target>/ (outside the repository), and prints per target the
-# executions, coverage (cov: edges, ft: features) and any finding. Exits non-zero on a finding:
-# a crash, sanitizer report, leak, timeout or out-of-memory leaves its input in
-# BUILD/fuzz-artifacts/.
+# executions, coverage (cov: edges, ft: features), corpus (inputs/bytes) and any finding. Exits
+# non-zero on a finding: a crash, sanitizer report, leak, timeout or out-of-memory leaves its
+# input in BUILD/fuzz-artifacts/.
 # Usage: scripts/run-fuzz.sh BUILD SECONDS TARGET...
 set -uo pipefail
 build="$1"
@@ -27,7 +27,8 @@ for t in "$@"; do
   last=$(grep -E '^#[0-9]+' "$log" | tail -1)
   cov=$(echo "$last" | grep -o 'cov: [0-9]*' | grep -o '[0-9]*')
   ft=$(echo "$last" | grep -o 'ft: [0-9]*' | grep -o '[0-9]*')
-  line="fuzz_$t: ${seconds}s, ${execs:-?} executions, cov ${cov:-?}, ft ${ft:-?}"
+  corp=$(echo "$last" | grep -o 'corp: [0-9]*/[0-9a-zA-Z]*' | cut -d' ' -f2)
+  line="fuzz_$t: ${seconds}s, ${execs:-?} executions, cov ${cov:-?}, ft ${ft:-?}, corpus ${corp:-?}"
   if [ $rc -ne 0 ]; then
     status=1
     line="$line, FINDING (exit $rc): $(grep -m1 -E 'ERROR|runtime error|deadly signal|Timeout|out-of-memory' "$log")"
