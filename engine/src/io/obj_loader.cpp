@@ -265,12 +265,13 @@ std::string diffuseTexture(const std::vector<tinyobj::shape_t>& shapes,
 }  // namespace
 
 Result<Mesh> loadObj(const std::string& path, const LoadControl* control) {
-    // The phases' shares of the time, measured on a 2M-triangle OBJ.
+    // The phases' shares of the time, measured on Nefertiti (100k triangles): reading 2 %,
+    // the line check 20 %, tinyobjloader 60 %, building the mesh 18 %.
     io::ProgressMeter meter(control);
-    meter.phase(0.0f, 0.05f);
+    meter.phase(0.0f, 0.02f);
     auto text = text::readFile(path, &meter);
     if (!text) return text.error();
-    meter.phase(0.05f, 0.3f);
+    meter.phase(0.02f, 0.22f);
     auto lines = checkObjText(*text, path, meter);
     if (!lines) return lines.error();
     const std::vector<int>& faceLines = lines->faceLines;
@@ -282,7 +283,7 @@ Result<Mesh> loadObj(const std::string& path, const LoadControl* control) {
     std::string warn, err;
     MtlReader mtl(std::filesystem::path(path).parent_path());
     {
-        meter.phase(0.3f, 0.75f);
+        meter.phase(0.22f, 0.82f);
         MeteredText buffer(*text, meter);
         std::istream stream(&buffer);
         // triangulate off: fanned below, after the indices are known to be valid; vertex colours
@@ -297,7 +298,7 @@ Result<Mesh> loadObj(const std::string& path, const LoadControl* control) {
         }
     }
     std::string().swap(*text);  // parsed: its memory goes before the mesh's is taken
-    meter.phase(0.75f, 1.0f);
+    meter.phase(0.82f, 1.0f);
     const auto positionCount = static_cast<std::int64_t>(attrib.vertices.size() / 3);
     const auto texcoordCount = static_cast<std::int64_t>(attrib.texcoords.size() / 2);
     const bool hasColors = !attrib.colors.empty() && attrib.colors.size() == attrib.vertices.size();
