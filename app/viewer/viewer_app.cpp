@@ -198,10 +198,11 @@ int App::run() {
     if (path.empty()) error = Error{{"assets/default.scene", 0}, "not found; name a .scene file"};
     // A large file opens on the loading thread as one chosen in the window does, so the window
     // and its progress bar are up at once; the default scene shows until it is ready. Smaller
-    // files load here, so bad input still ends the run with exit code 2 and one line.
+    // files load here, so bad input still ends the run with exit code 2 and one line, and so
+    // does everything in a run of a fixed number of frames (--frames: a script wants that file).
     std::error_code sizeError;
-    startupLoad = !error && path != defaultScenePath() && options.texture.empty() &&
-                  std::filesystem::is_regular_file(path, sizeError) &&
+    startupLoad = !error && options.frames <= 0 && path != defaultScenePath() &&
+                  options.texture.empty() && std::filesystem::is_regular_file(path, sizeError) &&
                   std::filesystem::file_size(path, sizeError) > kStartupLoadBytes &&
                   !defaultScenePath().empty();
     if (!error) error = model.load(startupLoad ? defaultScenePath() : path);
