@@ -19,6 +19,7 @@
 #   save    left drag across the image (orbit), then Ctrl+S (Save scene to the Scene panel's path)
 #   steps   run $FACET_DRIVE_STEPS, ';'-separated commands of this script: drag B X Y DX DY N,
 #           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, pause SECONDS
+# FACET_DRIVE_SETTLE sets the wait before the scenario (1 s by default).
 # With FACET_DRIVE_QUIT=term the viewer is stopped with SIGTERM instead of Escape (so a last
 # --window-shot still shows what Escape would close, the help for one).
 set -u
@@ -38,7 +39,9 @@ if [ -z "$wid" ]; then
   wait "$pid"
   exit 1
 fi
-sleep 1  # let it draw a few frames and lay out its panels
+# Let it draw a few frames and lay out its panels (FACET_DRIVE_SETTLE seconds: a test that must
+# act while a file loads waits less).
+sleep "${FACET_DRIVE_SETTLE:-1}"
 
 # A drag in small steps with pauses: each step lands in a different frame.
 drag() {  # button x0 y0 dx dy steps

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 #include "facet/evaluation/image_diff.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/scene_io.hpp"
+#include "large_mesh.hpp"
 #include "viewer_gui_support.hpp"
 
 namespace {
@@ -238,4 +241,60 @@ TEST_F(ViewerGui, CtrlSSavesABareModelAfterOrbitingAsASceneThatRendersTheFrame) 
     EXPECT_EQ(fs::path(first).filename(), "teapot.scene");
     EXPECT_TRUE(fs::exists(path("config/facet/imgui.ini")));
     EXPECT_FALSE(fs::exists(path("imgui.ini")));
+}
+
+// Issue 14: a 2M-triangle model named on the command line opens on the loading thread: the
+// window is up with the default scene and a progress bar; Cancel stops the read and the default
+// scene stays. (The OBJ, with v, vt and vn, takes seconds to read, so both runs act while it
+// loads: they start 0.2 s after the window appears.)
+TEST_F(ViewerGui, ALargeModelShowsItsProgressAndCancelKeepsTheSceneShown) {
+    REQUIRE_XDOTOOL();
+    const std::string big = path("grid2m.obj");
+    std::ofstream(big, std::ios::binary) << facet::test::gridObj(1000);
+    const std::string soon = "FACET_DRIVE_SETTLE=0.2";
+    const auto loading = [](const std::map<std::string, std::string>& state, int& running,
+                            double& fraction) {
+        std::istringstream in(state.at("loading"));
+        in >> running >> fraction;
+    };
+
+    // Stopped (SIGTERM) while it reads.
+    Outcome r =
+        driveSteps("pause 0.3", "--size " + kWindow1280 + " --window-shot window.png " + big,
+                   /*term=*/true, soon);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    auto state = readState(path("state.txt"));
+    EXPECT_EQ(fs::path(state.at("scene")).filename(), "default.scene");
+    int running = 0;
+    double fraction = 0.0;
+    loading(state, running, fraction);
+    ASSERT_EQ(running, 1) << "the load ended before the viewer was stopped";
+    EXPECT_GT(fraction, 0.0);
+    EXPECT_LT(fraction, 1.0);
+    const Rect box = rectOf(state, "window_loading");
+    const Rect cancel = rectOf(state, "window_loading_cancel");
+    ASSERT_GT(box.w, 200);
+    ASSERT_GT(cancel.w, 20);
+    // The loading window is drawn over the frame.
+    const Framebuffer window = readPng(path("window.png"));
+    const Framebuffer frame = readPng(path("frame.png"));
+    ASSERT_EQ(frame.width, 1280);
+    EXPECT_GT(differingShareAt(window, frame, kFrameX, box.x - kFrameX, box.y,
+                               box.x + box.w - kFrameX, box.y + box.h),
+              0.5);
+
+    // Cancel clicked: no load in flight, the default scene still shown, no error.
+    r = driveSteps("at " + std::to_string(cancel.x + cancel.w / 2) + " " +
+                       std::to_string(cancel.y + cancel.h / 2) + "; click 1; pause 0.5",
+                   "--size " + kWindow1280 + " " + big, /*term=*/false, soon);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    state = readState(path("state.txt"));
+    loading(state, running, fraction);
+    EXPECT_EQ(running, 0);
+    EXPECT_EQ(fs::path(state.at("scene")).filename(), "default.scene");
+    EXPECT_EQ(state.count("window_loading"), 0u);
+    std::stringstream log;
+    log << std::ifstream(path("viewer.log")).rdbuf();
+    EXPECT_EQ(log.str().find("facet-view:"), std::string::npos) << log.str();
+    fs::remove(big);
 }

@@ -735,18 +735,31 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     EXPECT_TRUE(job.running());
     // start() returns before the 100k-triangle file is read: the caller's frames go on.
     EXPECT_FALSE(job.take().has_value());
+    // The bar moves while it reads; Cancel then drops the load, mid-read, and the scene stays.
+    float seen = job.progress();
+    for (int i = 0; i < 20000 && seen <= 0.0f; ++i) {
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+        seen = job.progress();
+    }
+    EXPECT_GT(seen, 0.0f);
+    EXPECT_LT(seen, 1.0f);
     job.cancel();
     EXPECT_FALSE(job.running());
+    EXPECT_EQ(job.progress(), 0.0f);
     EXPECT_FALSE(job.take().has_value());
     EXPECT_EQ(m.scene.mesh->triangleCount(), before);
 
     job.start(nefertiti, 640, 360);
     std::optional<Result<LoadedScene>> done;
+    std::vector<float> bar;  // what the loading window showed, frame by frame
     for (int i = 0; i < 6000 && !done; ++i) {
+        bar.push_back(job.progress());
         done = job.take();
         if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     ASSERT_TRUE(done.has_value());
+    EXPECT_TRUE(std::is_sorted(bar.begin(), bar.end()));
+    EXPECT_GT(bar.back(), 0.0f);
     ASSERT_TRUE(*done) << done->error().what();
     EXPECT_TRUE((*done)->bareMesh);
     EXPECT_EQ((*done)->scene.camera.width, 640);

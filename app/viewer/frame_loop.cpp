@@ -50,9 +50,10 @@ int App::frame(Clock::time_point start, bool last) {
     }
     FramePlan plan = planFrame(model.rendererChoice, compare.enabled);
     const AccuracyView engineView = accuracyView(model.scene, model.sceneVersion, model.settings);
-    // The frame in hand is this one: leave the cores to the job.
-    const bool skipEngine = accuracy.running() && plan.engine && !plan.twin && engineFresh &&
-                            engineView == lastEngineView && compare == lastEngineCompare;
+    // The frame in hand is this one: leave the cores to the job (or to the file being read).
+    const bool skipEngine = (accuracy.running() || loading.running()) && plan.engine &&
+                            !plan.twin && engineFresh && engineView == lastEngineView &&
+                            compare == lastEngineCompare;
     if (skipEngine) plan.engine = false;
     const auto tPanels = Clock::now();
 

@@ -1,5 +1,6 @@
 #include "load_job.hpp"
 
+#include <atomic>
 #include <mutex>
 #include <utility>
 
@@ -8,15 +9,18 @@
 namespace facet::view {
 
 struct LoadJob::Shared {
+    std::atomic<bool> stop{false};  // read by the loaders, set by cancel()
+    std::atomic<float> progress{0.0f};
     std::mutex mutex;
     bool done = false;
     bool cancelled = false;
     std::optional<Result<LoadedScene>> result;
 };
 
-Result<LoadedScene> loadSceneOrMesh(const std::string& path, int width, int height) {
+Result<LoadedScene> loadSceneOrMesh(const std::string& path, int width, int height,
+                                    const LoadControl* control) {
     const bool bareMesh = fileKind(path) == FileKind::mesh;
-    Result<Scene> scene = openSceneFile(path, width, height);
+    Result<Scene> scene = openSceneFile(path, width, height, control);
     if (!scene) return scene.error();
     return LoadedScene{path, std::move(scene).value(), bareMesh};
 }
@@ -42,7 +46,12 @@ void LoadJob::start(const std::string& path, int width, int height) {
     path_ = path;
     started_ = std::chrono::steady_clock::now();
     std::thread worker([shared, path, width, height] {
-        Result<LoadedScene> loaded = loadSceneOrMesh(path, width, height);
+        LoadControl control;
+        control.progress = [&shared = *shared](float f) {
+            shared.progress.store(f, std::memory_order_relaxed);
+        };
+        control.cancel = &shared->stop;
+        Result<LoadedScene> loaded = loadSceneOrMesh(path, width, height, &control);
         const std::lock_guard lock(shared->mutex);
         if (!shared->cancelled) shared->result.emplace(std::move(loaded));
         shared->done = true;
@@ -56,6 +65,7 @@ bool LoadJob::running() const {
 
 void LoadJob::cancel() {
     if (!current_) return;
+    current_->stop.store(true, std::memory_order_relaxed);
     {
         const std::lock_guard lock(current_->mutex);
         current_->cancelled = true;
@@ -63,6 +73,10 @@ void LoadJob::cancel() {
     }
     current_.reset();
     path_.clear();
+}
+
+float LoadJob::progress() const {
+    return current_ ? current_->progress.load(std::memory_order_relaxed) : 0.0f;
 }
 
 double LoadJob::seconds() const {

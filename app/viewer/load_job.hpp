@@ -1,8 +1,8 @@
 #pragma once
 // Opening a scene or a mesh on a worker thread, so a 2M-triangle file does not freeze the
 // viewer: the old scene stays on screen until the new one is ready, and a failure keeps it.
-// The loaders have no progress hook, so the job reports the time spent; Cancel returns at once
-// (the worker finishes reading in the background and its result is dropped).
+// The worker passes a LoadControl to the loaders: they report the fraction read, and Cancel sets
+// its flag, which stops the read within a chunk of the file (the worker then ends on its own).
 
 #include <chrono>
 #include <memory>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "facet/load_control.hpp"
 #include "facet/scene.hpp"
 
 namespace facet::view {
@@ -30,15 +31,17 @@ class LoadJob {
     LoadJob() = default;
     LoadJob(const LoadJob&) = delete;
     LoadJob& operator=(const LoadJob&) = delete;
-    /// Waits for the workers still reading (a cancelled load runs to its end).
+    /// Cancels the load in flight and waits for its worker (a cancelled read stops quickly).
     ~LoadJob();
 
     /// Starts opening `path`; a bare mesh gets a scene of `width` × `height`.
     void start(const std::string& path, int width, int height);
     /// True from start() until the result is taken or the load cancelled.
     bool running() const;
-    /// Drops the load in flight; the viewer keeps its scene.
+    /// Stops the load in flight and drops it; the viewer keeps its scene. Returns at once.
     void cancel();
+    /// Fraction of the load in flight done so far, in [0, 1] (0 when none).
+    float progress() const;
     /// The file being loaded (empty when none).
     const std::string& path() const { return path_; }
     /// Seconds since start().
@@ -57,6 +60,7 @@ class LoadJob {
 };
 
 /// Opens `path` on the calling thread as LoadJob does on its worker.
-Result<LoadedScene> loadSceneOrMesh(const std::string& path, int width, int height);
+Result<LoadedScene> loadSceneOrMesh(const std::string& path, int width, int height,
+                                    const LoadControl* control = nullptr);
 
 }  // namespace facet::view

@@ -6,7 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "facet/texture.hpp"
@@ -14,6 +14,7 @@
 #include "panels.hpp"
 #include "scene_defaults.hpp"
 #include "viewer_app.hpp"
+#include "workspace_ui.hpp"
 
 namespace facet::view {
 namespace {
@@ -54,7 +55,7 @@ void openDropped(App& app) {
     }
 }
 
-// The loading window: name, time, an animated bar (the loaders report no fraction), Cancel.
+// The loading window: name, the fraction read and the time, Cancel.
 void loadingWindow(App& app) {
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Always,
@@ -65,13 +66,18 @@ void loadingWindow(App& app) {
                          ImGuiWindowFlags_NoSavedSettings)) {
         const double seconds = app.loading.seconds();
         ImGui::TextWrapped("%s", fileName(app.loading.path()).c_str());
-        char label[32];
-        std::snprintf(label, sizeof label, "%.1f s", seconds);
-        // A sweep that repeats every 2 s: the work is in progress, its share unknown.
-        ImGui::ProgressBar(static_cast<float>(std::fmod(seconds, 2.0) / 2.0), ImVec2(-1.0f, 0.0f),
-                           label);
+        const float done = app.loading.progress();
+        char label[48];
+        std::snprintf(label, sizeof label, "%.0f %%  (%.1f s)", 100.0 * done, seconds);
+        ImGui::ProgressBar(done, ImVec2(-1.0f, 0.0f), label);
         ImGui::TextDisabled("the current scene stays until this one is ready");
         if (ImGui::Button("Cancel")) app.loading.cancel();
+        // Where Cancel is, for the window tests (--state) to click it.
+        const ImVec2 at = ImGui::GetItemRectMin();
+        const ImVec2 button = ImGui::GetItemRectSize();
+        app.work.drawn["loading_cancel"] = {static_cast<int>(at.x), static_cast<int>(at.y),
+                                            static_cast<int>(button.x), static_cast<int>(button.y)};
+        noteWindow(app, "loading");
     }
     ImGui::End();
 }
@@ -96,11 +102,15 @@ void saveShownScene(App& app) {
 
 void sceneFileEvents(App& app) {
     if (std::optional<Result<LoadedScene>> done = app.loading.take()) {
-        if (*done)
+        if (*done) {
             adoptScene(app, std::move(*done).value());
-        else
+        } else {
+            if (app.startupLoad)  // the command line's file: said where scripts look too
+                std::fprintf(stderr, "facet-view: %s\n", done->error().what().c_str());
+            app.startupLoad = false;
             showError(app, "Cannot open the file",
                       done->error().what() + "\n\nThe previous scene stays.");
+        }
     }
     openDropped(app);
     if (app.keys.saveScene) saveShownScene(app);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -25,6 +26,10 @@
 
 namespace facet::view {
 namespace {
+
+// A file named on the command line above this size opens on the loading thread (App::run); a
+// few megabytes of mesh load in well under a second.
+constexpr std::uintmax_t kStartupLoadBytes = std::uintmax_t{8} << 20;
 
 volatile std::sig_atomic_t gStopSignal = 0;  // SIGTERM/SIGINT: finish the frame, write outputs
 
@@ -122,6 +127,7 @@ void showError(App& app, const std::string& title, const std::string& message) {
 }
 
 void openScene(App& app, const std::string& path) {
+    app.startupLoad = false;  // replaced: the command line's file is no longer coming
     app.ui.scenePath = path;
     app.loading.start(path, kBareMeshWidth, kBareMeshHeight);
 }
@@ -129,6 +135,12 @@ void openScene(App& app, const std::string& path) {
 void adoptScene(App& app, LoadedScene loaded) {
     const std::string path = loaded.path;
     app.model.adopt(std::move(loaded));
+    if (app.startupLoad) {
+        // The command line's file: its options win over the scene's defaults, as they do when
+        // it loads before the window opens (they were checked then).
+        app.startupLoad = false;
+        (void)applyOptions(app.options, app.model.settings);
+    }
     app.ui.scenePath = path;
     app.ui.texturePath = app.model.scene.texturePath;
     app.ui.saveScenePath = defaultSavePath(path);
@@ -184,9 +196,20 @@ int App::run() {
     const std::string path = options.scene.empty() ? defaultScenePath() : options.scene;
     Status error;
     if (path.empty()) error = Error{{"assets/default.scene", 0}, "not found; name a .scene file"};
+    // A large file opens on the loading thread as one chosen in the window does, so the window
+    // and its progress bar are up at once; the default scene shows until it is ready. Smaller
+    // files load here, so bad input still ends the run with exit code 2 and one line, and so
+    // does everything in a run of a fixed number of frames (--frames: a script wants that file).
+    std::error_code sizeError;
+    startupLoad = !error && options.frames <= 0 && path != defaultScenePath() &&
+                  options.texture.empty() && std::filesystem::is_regular_file(path, sizeError) &&
+                  std::filesystem::file_size(path, sizeError) > kStartupLoadBytes &&
+                  !defaultScenePath().empty();
+    if (!error) error = model.load(startupLoad ? defaultScenePath() : path);
+    // After the load: the default scene shown meanwhile is not one the user opened.
     model.recentFile = configFolder().empty() ? "" : configFolder() + "/recent.txt";
     model.recent = readRecent(model.recentFile, kMaxRecent);
-    if (!error) error = model.load(path);
+    if (startupLoad) loading.start(path, kBareMeshWidth, kBareMeshHeight);
     if (!error && !options.texture.empty()) {
         error = model.loadTexture(options.texture);
         applySceneDefaults(model.scene, model.bareMesh, model.settings);
@@ -275,9 +298,10 @@ int App::run() {
     vsyncApplied = ui.vsync;
     while (status == 0) {
         const auto start = std::chrono::steady_clock::now();
-        // While the accuracy job measures, ten frames a second are enough for its progress bar
-        // and leave the cores to it (frame_loop.cpp skips unchanged engine frames too).
-        if (accuracy.running())
+        // While the accuracy job measures or a file loads, ten frames a second are enough for
+        // the progress bar and leave the cores to the job (frame_loop.cpp skips unchanged engine
+        // frames too); input still wakes the loop at once.
+        if (accuracy.running() || loading.running())
             glfwWaitEventsTimeout(0.1);
         else
             glfwPollEvents();
@@ -307,7 +331,6 @@ int App::run() {
     if (!shown) shown = &display;
     accuracy.cancel();  // a ground truth in flight stops within milliseconds
     accuracy.wait();
-    loading.cancel();
 
     if (status == 0 && !options.screenshot.empty() && shown) {
         if (Status e = saveFrameShot(*shown, options.screenshot)) {
@@ -324,6 +347,7 @@ int App::run() {
             status = 1;
         }
     }
+    loading.cancel();  // after --state, which tells whether a load was in flight
     if (options.fpsReport) {
         // The first frames pay for first-touch allocations and ImGui's layout pass.
         const std::size_t skip = std::min<std::size_t>(10, history.frames.size() / 5);

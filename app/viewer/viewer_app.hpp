@@ -92,7 +92,10 @@ struct App {
     bool vsyncApplied = true;          ///< the swap interval last set
     AccuracyJob accuracy;              ///< Compare: the methods against the ground truth
     LoadJob loading;                   ///< a scene or mesh being opened on a worker thread
-    std::uint64_t accuracySeen = 0;    ///< reports announced on stdout so far
+    /// The large file named on the command line is on the loading thread (the default scene
+    /// shows meanwhile); the command line's settings are applied again once it arrives.
+    bool startupLoad = false;
+    std::uint64_t accuracySeen = 0;  ///< reports announced on stdout so far
     /// The view and Compare settings the engine last rendered, so a frame can be skipped while
     /// the accuracy job measures (see frame_loop.cpp).
     AccuracyView lastEngineView;

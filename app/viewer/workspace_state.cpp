@@ -29,6 +29,10 @@ std::string workspaceStateText(const App& app) {
     s << "sidebar " << (app.ui.showPanels ? (w.collapsed ? "collapsed" : "open") : "hidden")
       << "\n";
     for (const auto& [name, r] : w.drawn) s << "window_" << name << " " << rect(r) << "\n";
+    char loading[32];  // a load in flight (1) and its fraction, or 0 0
+    std::snprintf(loading, sizeof loading, "%d %.3f", app.loading.running() ? 1 : 0,
+                  app.loading.progress());
+    s << "loading " << loading << "\n";
     s << "help " << (w.help ? 1 : 0) << "\n";
     s << "stats_overlay " << (w.statsOverlay ? 1 : 0) << "\n";
     s << "fullscreen " << (w.fullscreen ? 1 : 0) << "\n";

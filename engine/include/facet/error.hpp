@@ -20,6 +20,8 @@ struct FileLoc {
 struct Error {
     FileLoc loc;
     std::string message;
+    /// The load was stopped through its LoadControl, not by anything in the file.
+    bool cancelled = false;
 
     /// "file:line: message" (or "file: message" for line 0), the form compilers use.
     std::string what() const {

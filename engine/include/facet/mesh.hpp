@@ -39,6 +39,9 @@ struct Mesh {
     bool hasUvs() const { return !uvs.empty(); }
     /// True when the file gave the normals lighting uses.
     bool hasNormals() const { return !normals.empty(); }
+
+    /// Every attribute, index and path equal.
+    bool operator==(const Mesh&) const = default;
 };
 
 /// Axis-aligned bounds of a mesh's positions (min > max when the mesh is empty).

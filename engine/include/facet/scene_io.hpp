@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "facet/error.hpp"
+#include "facet/load_control.hpp"
 #include "facet/scene.hpp"
 
 namespace facet {
@@ -19,12 +20,14 @@ Result<Scene> parseScene(std::string_view text, const std::string& fileName);
 std::string resolveScenePath(const std::string& sceneFile, const std::string& named);
 
 /// Reads a .scene file and loads its mesh and texture (line 10, or else the OBJ's map_Kd); on
-/// failure nothing is returned but the error, which names the file and line at fault.
-Result<Scene> loadScene(const std::string& path);
+/// failure nothing is returned but the error, which names the file and line at fault. The
+/// optional `control` gets the progress and may cancel (then Error::cancelled is set).
+Result<Scene> loadScene(const std::string& path, const LoadControl* control = nullptr);
 
 /// Replaces the scene's texture with the image at `path` (the CLI's --texture, the viewer's
 /// texture field). On failure the scene is left exactly as it was.
-Status loadSceneTexture(Scene& scene, const std::string& path);
+Status loadSceneTexture(Scene& scene, const std::string& path,
+                        const LoadControl* control = nullptr);
 
 /// What a file holds, as far as opening it goes.
 enum class FileKind { unknown, scene, mesh, image };
@@ -44,9 +47,10 @@ inline constexpr int kBareMeshHeight = 720;
 Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height);
 
 /// Opens a .scene file, or a bare .off/.obj mesh as sceneForMesh() at `width` × `height` (with
-/// its OBJ map_Kd texture). Anything else is an error saying what was expected.
+/// its OBJ map_Kd texture). Anything else is an error saying what was expected. The optional
+/// `control` gets the progress and may cancel (then Error::cancelled is set).
 Result<Scene> openSceneFile(const std::string& path, int width = kBareMeshWidth,
-                            int height = kBareMeshHeight);
+                            int height = kBareMeshHeight, const LoadControl* control = nullptr);
 
 /// The .scene text (conventions §1) of `scene`: mesh and texture paths relative to the folder
 /// of `sceneFile`, numbers in shortest round-trip form, so loading it gives the same scene.

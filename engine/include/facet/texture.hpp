@@ -10,6 +10,7 @@
 
 #include "facet/error.hpp"
 #include "facet/limits.hpp"
+#include "facet/load_control.hpp"
 
 namespace facet {
 
@@ -61,7 +62,8 @@ class Texture {
 
 /// Reads a PNG (libpng), JPEG (libjpeg-turbo), BMP or TGA (stb_image) file as RGBA8 and builds
 /// its mip chain. Missing, empty, corrupt, unsupported or over-limit files (limits.hpp) and sides
-/// outside 1…kMaxImageSide give an Error naming the file.
-Result<Texture> loadTexture(const std::string& path);
+/// outside 1…kMaxImageSide give an Error naming the file. The optional `control` gets the
+/// progress (after reading, after decoding) and may cancel between those steps.
+Result<Texture> loadTexture(const std::string& path, const LoadControl* control = nullptr);
 
 }  // namespace facet

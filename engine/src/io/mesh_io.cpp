@@ -37,10 +37,10 @@ void appendUint(std::string& out, std::uint64_t v) {
 
 }  // namespace
 
-Result<Mesh> loadMesh(const std::string& path) {
+Result<Mesh> loadMesh(const std::string& path, const LoadControl* control) {
     const std::string ext = lowercase(std::filesystem::path(path).extension().string());
-    if (ext == ".off") return loadOff(path);
-    if (ext == ".obj") return loadObj(path);
+    if (ext == ".off") return loadOff(path, control);
+    if (ext == ".obj") return loadObj(path, control);
     if (ext.empty()) return Error{{path, 0}, "mesh file has no extension: expected .off or .obj"};
     return Error{{path, 0}, "unknown mesh format '" + ext + "': expected .off or .obj"};
 }

@@ -21,6 +21,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <streambuf>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -31,6 +32,7 @@
 
 #include "facet/limits.hpp"
 #include "facet/mesh_io.hpp"
+#include "io/load_progress.hpp"
 #include "io/text_scan.hpp"
 
 namespace facet {
@@ -164,7 +166,8 @@ std::optional<std::string> checkCorner(std::string_view corner) {
 }
 
 // The checks tinyobjloader does not make, with line numbers.
-Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
+Result<ObjLines> checkObjText(std::string_view text, const std::string& path,
+                              io::ProgressMeter& meter) {
     ObjLines result;
     std::uint64_t positions = 0, texcoords = 0, corners = 0, triangles = 0;
     std::size_t copied = 0;  // bytes of `text` already in result.splitText
@@ -173,6 +176,10 @@ Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
     std::string_view line;
     while (lines.next(line)) {
         const int number = lines.lineNumber();
+        if (static_cast<std::uint64_t>(number) % io::kLinesPerStep == 0 &&
+            !meter.step(text.size() - lines.remaining(), text.size())) {
+            return io::ProgressMeter::cancelledError(path);
+        }
         const auto fail = [&](std::string message) {
             return Error{{path, number}, std::move(message)};
         };
@@ -224,6 +231,31 @@ Result<ObjLines> checkObjText(std::string_view text, const std::string& path) {
     if (!result.splits.empty()) result.splitText.append(text, copied);
     return result;
 }
+
+// What tinyobjloader reads the text through: handed out in chunks, each boundary a progress
+// report and a cancellation point. A cancelled load sees the end of the text, which stops
+// tinyobjloader as the end of a file would; the caller then returns the cancelled error.
+class MeteredText : public std::streambuf {
+  public:
+    MeteredText(std::string& text, io::ProgressMeter& meter) : text_(text), meter_(meter) {}
+
+  protected:
+    int_type underflow() override {
+        if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+        if (next_ >= text_.size() || !meter_.step(next_, text_.size())) return traits_type::eof();
+        constexpr std::size_t kChunk = std::size_t(1) << 18;
+        const std::size_t n = std::min(kChunk, text_.size() - next_);
+        char* begin = text_.data() + next_;
+        setg(begin, begin, begin + n);
+        next_ += n;
+        return traits_type::to_int_type(*begin);
+    }
+
+  private:
+    std::string& text_;
+    io::ProgressMeter& meter_;
+    std::size_t next_ = 0;
+};
 
 // The line number in a tinyobjloader message ("... line 12.)"), 0 if none.
 int lineInMessage(const std::string& message) {
@@ -290,10 +322,15 @@ std::string diffuseTexture(const std::vector<tinyobj::shape_t>& shapes,
 
 }  // namespace
 
-Result<Mesh> loadObj(const std::string& path) {
-    auto text = text::readFile(path);
+Result<Mesh> loadObj(const std::string& path, const LoadControl* control) {
+    // The phases' shares of the time, measured on Nefertiti (100k triangles): reading 2 %,
+    // the line check 20 %, tinyobjloader 60 %, building the mesh 18 %.
+    io::ProgressMeter meter(control);
+    meter.phase(0.0f, 0.02f);
+    auto text = text::readFile(path, &meter);
     if (!text) return text.error();
-    auto lines = checkObjText(*text, path);
+    meter.phase(0.02f, 0.22f);
+    auto lines = checkObjText(*text, path, meter);
     if (!lines) return lines.error();
     const std::vector<int>& faceLines = lines->faceLines;
 
@@ -304,19 +341,25 @@ Result<Mesh> loadObj(const std::string& path) {
     std::string warn, err;
     MtlReader mtl(std::filesystem::path(path).parent_path());
     {
-        std::istringstream stream(lines->splits.empty() ? std::move(*text)
-                                                        : std::move(lines->splitText));
+        // Faces longer than tinyobjloader takes were rewritten into pieces (checkObjText).
+        if (!lines->splits.empty()) text->swap(lines->splitText);
+        meter.phase(0.22f, 0.82f);
+        MeteredText buffer(*text, meter);
+        std::istream stream(&buffer);
         // triangulate off: fanned below, after the indices are known to be valid; vertex colours
         // without a fallback, so that attrib.colors stays empty when the file has none.
         const bool parsed = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &stream,
                                              &mtl, /*triangulate=*/false,
                                              /*default_vcols_fallback=*/false);
+        if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);
         if (mtl.problem()) return *mtl.problem();
         if (!parsed) {
             return Error{{path, lines->originalLine(lineInMessage(err))},
                          "cannot parse OBJ: " + firstLine(err)};
         }
     }
+    std::string().swap(*text);  // parsed: its memory goes before the mesh's is taken
+    meter.phase(0.82f, 1.0f);
     const auto positionCount = static_cast<std::int64_t>(attrib.vertices.size() / 3);
     const auto texcoordCount = static_cast<std::int64_t>(attrib.texcoords.size() / 2);
     const bool hasColors = !attrib.colors.empty() && attrib.colors.size() == attrib.vertices.size();
@@ -350,6 +393,8 @@ Result<Mesh> loadObj(const std::string& path) {
     for (const auto& shape : shapes) {
         std::size_t offset = 0;
         for (const unsigned char n : shape.mesh.num_face_vertices) {
+            if (face % (4 * io::kLinesPerStep) == 0 && !meter.step(face, faceCount))
+                return io::ProgressMeter::cancelledError(path);
             const int line = linesKnown ? faceLines[face] : 0;
             corners.clear();
             for (std::size_t k = 0; k < n; ++k) {
@@ -431,6 +476,7 @@ Result<Mesh> loadObj(const std::string& path) {
                                ? file.string()
                                : (std::filesystem::path(path).parent_path() / file).string();
     }
+    meter.finish();
     return mesh;
 }
 

@@ -11,6 +11,7 @@
 
 #include "facet/limits.hpp"
 #include "facet/mesh_io.hpp"
+#include "io/load_progress.hpp"
 #include "io/text_scan.hpp"
 
 namespace facet {
@@ -98,10 +99,15 @@ Result<std::pair<std::int64_t, std::int64_t>> readCounts(const OffReader& in, st
     return std::pair{nv, nf};
 }
 
-}  // namespace
-
-Result<Mesh> parseOff(std::string_view text, const std::string& fileName) {
+// The parser proper; `meter` is in the phase the caller chose and counts bytes consumed.
+Result<Mesh> parseOffText(std::string_view text, const std::string& fileName,
+                          io::ProgressMeter& meter) {
     OffReader in(text, fileName);
+    // Every kLinesPerStep vertices or faces: report the bytes consumed, stop if cancelled.
+    const auto stepOn = [&](std::int64_t i) {
+        return (static_cast<std::uint64_t>(i) % io::kLinesPerStep) != 0 ||
+               meter.step(text.size() - in.remainingBytes(), text.size());
+    };
     Error err;
 
     // Header: OFF or COFF, counts on the same line or the next.
@@ -146,6 +152,7 @@ Result<Mesh> parseOff(std::string_view text, const std::string& fileName) {
     bool colorsAllWhole = true;
     bool colorsAbove1 = false;
     for (std::int64_t i = 0; i < nv; ++i) {
+        if (!stepOn(i)) return io::ProgressMeter::cancelledError(fileName);
         if (!in.next()) {
             return in.error("file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
                             " vertices");
@@ -190,6 +197,7 @@ Result<Mesh> parseOff(std::string_view text, const std::string& fileName) {
     mesh.indices.reserve(unf * 3);
     std::vector<std::uint32_t> corners;
     for (std::int64_t f = 0; f < nf; ++f) {
+        if (!stepOn(f)) return io::ProgressMeter::cancelledError(fileName);
         if (!in.next()) {
             return in.error("file ends after " + std::to_string(f) + " of " + std::to_string(nf) +
                             " faces");
@@ -228,10 +236,26 @@ Result<Mesh> parseOff(std::string_view text, const std::string& fileName) {
     return mesh;
 }
 
-Result<Mesh> loadOff(const std::string& path) {
-    auto text = text::readFile(path);
+}  // namespace
+
+Result<Mesh> parseOff(std::string_view text, const std::string& fileName,
+                      const LoadControl* control) {
+    io::ProgressMeter meter(control);
+    auto mesh = parseOffText(text, fileName, meter);
+    if (mesh) meter.finish();
+    return mesh;
+}
+
+Result<Mesh> loadOff(const std::string& path, const LoadControl* control) {
+    io::ProgressMeter meter(control);
+    // Reading is a few times faster than parsing, byte for byte.
+    meter.phase(0.0f, 0.1f);
+    auto text = text::readFile(path, &meter);
     if (!text) return text.error();
-    return parseOff(*text, path);
+    meter.phase(0.1f, 1.0f);
+    auto mesh = parseOffText(*text, path, meter);
+    if (mesh) meter.finish();
+    return mesh;
 }
 
 }  // namespace facet

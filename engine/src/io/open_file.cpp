@@ -19,6 +19,7 @@
 #include "facet/mesh_io.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
+#include "io/load_progress.hpp"
 #include "io/text_scan.hpp"
 
 namespace facet {
@@ -92,14 +93,15 @@ FileKind kindFromExtension(const std::string& path) {
 }
 
 // OFF or OBJ by content (a mesh may have any extension once its content says which).
-Result<Mesh> loadMeshFile(const std::string& path, std::string_view head) {
+Result<Mesh> loadMeshFile(const std::string& path, std::string_view head,
+                          const LoadControl* control) {
     std::string_view first;
     if (kindFromContent(head, first) == FileKind::mesh) {
         const std::string_view word = firstWord(first);
-        if (word == "OFF" || word == "COFF") return loadOff(path);
-        return loadObj(path);
+        if (word == "OFF" || word == "COFF") return loadOff(path, control);
+        return loadObj(path, control);
     }
-    return loadMesh(path);  // by extension, with its own message for anything else
+    return loadMesh(path, control);  // by extension, with its own message for anything else
 }
 
 }  // namespace
@@ -162,7 +164,8 @@ Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height
     return scene;
 }
 
-Result<Scene> openSceneFile(const std::string& path, int width, int height) {
+Result<Scene> openSceneFile(const std::string& path, int width, int height,
+                            const LoadControl* control) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return Error{{path, 0}, "is a folder, not a file"};
     if (!std::filesystem::exists(path, ec)) return Error{{path, 0}, "file not found"};
@@ -172,18 +175,26 @@ Result<Scene> openSceneFile(const std::string& path, int width, int height) {
     if (kind == FileKind::unknown) kind = kindFromExtension(path);
     switch (kind) {
         case FileKind::scene:
-            return loadScene(path);
+            return loadScene(path, control);
         case FileKind::mesh: {
-            auto mesh = loadMeshFile(path, head);
+            io::ProgressMeter meter(control);
+            const float meshShare = 0.95f;  // the rest frames it and loads its map_Kd
+            const LoadControl meshControl = meter.sub(0.0f, meshShare);
+            auto mesh = loadMeshFile(path, head, control ? &meshControl : nullptr);
             if (!mesh) return mesh.error();
             const std::string mapKd = mesh->texturePath;
             Scene scene = sceneForMesh(std::move(*mesh), path, width, height);
+            const LoadControl textureControl = meter.sub(meshShare, 1.0f);
             if (!mapKd.empty()) {
-                if (Status st = loadSceneTexture(scene, mapKd)) {
+                if (Status st =
+                        loadSceneTexture(scene, mapKd, control ? &textureControl : nullptr)) {
+                    if (st->cancelled) return *st;
                     return Error{{path, 0},
                                  "cannot load the map_Kd texture of its material: " + st->what()};
                 }
             }
+            if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);
+            meter.finish();
             return scene;
         }
         case FileKind::image:

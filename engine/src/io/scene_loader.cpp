@@ -18,6 +18,7 @@
 #include "facet/mesh_io.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
+#include "io/load_progress.hpp"
 #include "io/text_scan.hpp"
 
 namespace facet {
@@ -260,7 +261,9 @@ std::string resolveScenePath(const std::string& sceneFile, const std::string& na
     return {};
 }
 
-Result<Scene> loadScene(const std::string& path) {
+Result<Scene> loadScene(const std::string& path, const LoadControl* control) {
+    io::ProgressMeter meter(control);
+    if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);
     auto text = text::readFile(path);
     if (!text) return text.error();
     auto parsed = parseWithLines(*text, path);
@@ -286,21 +289,29 @@ Result<Scene> loadScene(const std::string& path) {
             {path, parsed->meshLine},
             "mesh file " + text::quoted(scene.meshPath, std::string::npos) + " not found" + where};
     }
-    auto mesh = loadMesh(meshFile);
+    const bool textured = !scene.texturePath.empty();
+    // The mesh is most of the work; a texture's decoding is the rest.
+    const float meshShare = textured ? 0.9f : 0.97f;
+    const LoadControl meshControl = meter.sub(0.0f, meshShare);
+    auto mesh = loadMesh(meshFile, control ? &meshControl : nullptr);
     if (!mesh) return mesh.error();  // keeps the mesh file's own name and line
     scene.meshPath = meshFile;
     scene.mesh = std::make_shared<const Mesh>(std::move(*mesh));
 
     // The scene's own texture wins over the OBJ's map_Kd (conventions §3).
+    const LoadControl textureControl = meter.sub(meshShare, 1.0f);
+    const LoadControl* const texturing = control ? &textureControl : nullptr;
     if (!scene.texturePath.empty()) {
-        auto texture = loadTexture(scene.texturePath);
+        auto texture = loadTexture(scene.texturePath, texturing);
+        if (!texture && texture.error().cancelled) return texture.error();
         if (!texture) {
             return Error{{path, parsed->textureLine},
                          "cannot load texture: " + texture.error().what()};
         }
         scene.texture = std::make_shared<const Texture>(std::move(*texture));
     } else if (!scene.mesh->texturePath.empty()) {
-        auto texture = loadTexture(scene.mesh->texturePath);
+        auto texture = loadTexture(scene.mesh->texturePath, texturing);
+        if (!texture && texture.error().cancelled) return texture.error();
         if (!texture) {
             return Error{
                 {meshFile, 0},
@@ -309,11 +320,12 @@ Result<Scene> loadScene(const std::string& path) {
         scene.texturePath = scene.mesh->texturePath;
         scene.texture = std::make_shared<const Texture>(std::move(*texture));
     }
+    meter.finish();
     return std::move(parsed->scene);
 }
 
-Status loadSceneTexture(Scene& scene, const std::string& path) {
-    auto texture = loadTexture(path);
+Status loadSceneTexture(Scene& scene, const std::string& path, const LoadControl* control) {
+    auto texture = loadTexture(path, control);
     if (!texture) return texture.error();
     scene.texture = std::make_shared<const Texture>(std::move(*texture));
     scene.texturePath = path;

@@ -3,6 +3,7 @@
 // lines with their 1-based numbers, comments, white-space tokens and locale-independent numbers.
 // Private to the engine: the loaders report errors in the same words through these helpers.
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +16,7 @@
 
 #include "facet/error.hpp"
 #include "facet/limits.hpp"
+#include "io/load_progress.hpp"
 
 namespace facet::text {
 
@@ -144,8 +146,9 @@ inline std::string countNoun(std::size_t n, std::string_view noun) {
     return std::to_string(n) + " " + std::string(noun) + (n == 1 ? "" : "s");
 }
 
-/// Reads a whole regular file of at most kMaxFileBytes; the error names the file (line 0).
-inline Result<std::string> readFile(const std::string& path) {
+/// Reads a whole regular file of at most kMaxFileBytes; the error names the file (line 0). With
+/// a meter, the read goes in chunks that report the bytes read and stop when cancelled.
+inline Result<std::string> readFile(const std::string& path, io::ProgressMeter* meter = nullptr) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         return Error{{path, 0}, "is a folder, not a file"};
@@ -166,8 +169,16 @@ inline Result<std::string> readFile(const std::string& path) {
     }
     in.seekg(0, std::ios::beg);
     std::string text(static_cast<std::size_t>(size), '\0');
-    if (size > 0 && !in.read(text.data(), static_cast<std::streamsize>(size))) {
-        return Error{{path, 0}, "cannot read file"};
+    // A cold disk or a network folder may take seconds for a large model.
+    constexpr std::size_t kChunk = std::size_t(1) << 20;
+    for (std::size_t done = 0; done < text.size();) {
+        const std::size_t n = std::min(kChunk, text.size() - done);
+        if (!in.read(text.data() + done, static_cast<std::streamsize>(n))) {
+            return Error{{path, 0}, "cannot read file"};
+        }
+        done += n;
+        if (meter && !meter->step(done, text.size()))
+            return io::ProgressMeter::cancelledError(path);
     }
     return text;
 }

@@ -28,6 +28,7 @@
 
 #include "facet/limits.hpp"
 #include "io/image_decode.hpp"
+#include "io/load_progress.hpp"
 
 namespace facet {
 namespace detail {
@@ -141,7 +142,11 @@ Result<Texture> decodeTexture(std::span<const unsigned char> bytes, const std::s
 
 }  // namespace detail
 
-Result<Texture> loadTexture(const std::string& path) {
+Result<Texture> loadTexture(const std::string& path, const LoadControl* control) {
+    io::ProgressMeter meter(control);
+    // An image decodes in one call, so the checks fall before and after the read.
+    meter.phase(0.0f, 0.3f);
+    if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);
     using detail::fileError;
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -163,7 +168,12 @@ Result<Texture> loadTexture(const std::string& path) {
         in.seekg(0);
         if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
             return fileError(path, "cannot read the texture file");
-        return detail::decodeTexture(bytes, path);
+        if (!meter.step(1, 1)) return io::ProgressMeter::cancelledError(path);
+        meter.phase(0.3f, 1.0f);
+        auto texture = detail::decodeTexture(bytes, path);
+        if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);
+        if (texture) meter.finish();
+        return texture;
     } catch (const std::bad_alloc&) {
         return fileError(path, "not enough memory to load this texture");
     }
