@@ -3,7 +3,9 @@
 #include "binning/tiles.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
+#include <type_traits>
 
 #include <omp.h>
 
@@ -20,6 +22,8 @@ constexpr std::size_t kBatchPerThread = 2048;
 /// of the layout's varyings only.
 constexpr std::size_t kSetupBytes = sizeof(CoverageSetup);
 constexpr std::size_t kPlaneHeadBytes = offsetof(Planes, a0);
+static_assert(std::is_trivially_copyable_v<CoverageSetup> && std::is_trivially_copyable_v<Planes> &&
+              std::is_standard_layout_v<Planes>);
 
 /// Bytes of a record with `varyings` varyings, rounded up so every record stays 8-byte aligned.
 constexpr std::size_t recordBytes(int varyings) {
@@ -108,7 +112,8 @@ std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int hei
                 setup = clipSetup(setup, rect);
                 if (setup.box.empty()) continue;
             }
-            std::memcpy(&planes, record + kSetupBytes, kPlaneHeadBytes);
+            // Planes is trivially copyable; its head is a prefix of its layout.
+            std::memcpy(static_cast<void*>(&planes), record + kSetupBytes, kPlaneHeadBytes);
             const std::byte* varyings = record + kSetupBytes + kPlaneHeadBytes;
             std::memcpy(planes.a0, varyings, n);
             std::memcpy(planes.d1, varyings + n, n);
