@@ -1,8 +1,11 @@
-// Sort-middle rasterization on OpenMP threads (see tile_renderer.hpp).
+// Sort-middle rasterization on OpenMP threads (see tiles.hpp).
 
 #include "binning/tiles.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
 
 #include <omp.h>
 
@@ -10,8 +13,30 @@ namespace facet::detail {
 namespace {
 
 /// Triangles each thread's front end takes per batch: big enough that the two barriers per
-/// batch cost little, small enough that a batch's records (about 300 bytes each) stay in cache.
-constexpr std::size_t kBatchPerThread = 8192;
+/// batch cost little, small enough that a batch's records (168 to 300 bytes each) and bins stay
+/// in the core's L2 until the tiles read them: 8192 spilled them, and the tile loop then waited
+/// on memory for every record.
+constexpr std::size_t kBatchPerThread = 2048;
+
+/// A packed record: the setup, then the planes' fields before the varyings, then a0, d1 and d2
+/// of the layout's varyings only.
+constexpr std::size_t kSetupBytes = sizeof(CoverageSetup);
+constexpr std::size_t kPlaneHeadBytes = offsetof(Planes, a0);
+static_assert(std::is_trivially_copyable_v<CoverageSetup> && std::is_trivially_copyable_v<Planes> &&
+              std::is_standard_layout_v<Planes>);
+
+/// Bytes of a record with `varyings` varyings, rounded up so every record stays 8-byte aligned.
+constexpr std::size_t recordBytes(int varyings) {
+    const std::size_t bytes =
+        kSetupBytes + kPlaneHeadBytes + 3 * sizeof(float) * static_cast<std::size_t>(varyings);
+    return (bytes + 7) / 8 * 8;
+}
+
+/// Whether `inner` lies within `outer`.
+bool contains(const PixelRect& outer, const PixelRect& inner) {
+    return inner.x0 >= outer.x0 && inner.y0 >= outer.y0 && inner.x1 <= outer.x1 &&
+           inner.y1 <= outer.y1;
+}
 
 /// The setup restricted to `rect`; the edge values move to the new first pixel exactly, in
 /// integers, so coverage inside the rectangle is unchanged.
@@ -42,15 +67,27 @@ int resolveThreads(int requested) {
 std::size_t TileRenderer::binTriangle(void* context, const CoverageSetup& setup,
                                       const Planes& planes) {
     Slice& slice = *static_cast<Slice*>(context);
-    const auto index = static_cast<std::uint32_t>(slice.records.size());
-    slice.records.push_back({setup, planes});
+    const std::size_t at = slice.used;
+    if (at + slice.recordBytes > slice.records.size())
+        slice.records.resize(std::max(2 * slice.records.size(), at + slice.recordBytes));
+    std::byte* record = slice.records.data() + at;
+    slice.used = at + slice.recordBytes;
+    std::memcpy(record, &setup, kSetupBytes);
+    std::memcpy(record + kSetupBytes, &planes, kPlaneHeadBytes);
+    const std::size_t n = sizeof(float) * static_cast<std::size_t>(slice.varyings);
+    std::byte* varyings = record + kSetupBytes + kPlaneHeadBytes;
+    std::memcpy(varyings, planes.a0, n);
+    std::memcpy(varyings + n, planes.d1, n);
+    std::memcpy(varyings + 2 * n, planes.d2, n);
+
+    const auto offset = static_cast<std::uint32_t>(at);
     const PixelRect& b = setup.box;
     for (int ty = b.y0 / kTileSize; ty <= b.y1 / kTileSize; ++ty)
         for (int tx = b.x0 / kTileSize; tx <= b.x1 / kTileSize; ++tx) {
             const auto tile = static_cast<std::size_t>(ty * slice.tilesX + tx);
             std::vector<std::uint32_t>& bin = slice.bins[tile];
             if (bin.empty()) slice.touched.push_back(static_cast<std::uint32_t>(tile));
-            bin.push_back(index);
+            bin.push_back(offset);
         }
     return 0;  // fragments are counted when the tiles are rasterized
 }
@@ -62,12 +99,26 @@ std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int hei
     const PixelRect rect{x0, y0, std::min(x0 + kTileSize, width) - 1,
                          std::min(y0 + kTileSize, height) - 1};
     std::size_t fragments = 0;
+    CoverageSetup setup;
+    Planes planes{};                            // the varyings past the layout's are never read
     for (std::size_t s = 0; s < slices; ++s) {  // in submission order
         const Slice& slice = slices_[s];
+        const std::size_t n = sizeof(float) * static_cast<std::size_t>(slice.varyings);
         for (const std::uint32_t r : slice.bins[static_cast<std::size_t>(tile)]) {
-            const Record& record = slice.records[r];
-            const CoverageSetup part = clipSetup(record.setup, rect);
-            if (!part.box.empty()) fragments += rasterize(context, part, record.planes);
+            const std::byte* record = slice.records.data() + r;
+            std::memcpy(&setup, record, kSetupBytes);
+            // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
+            if (!contains(rect, setup.box)) {
+                setup = clipSetup(setup, rect);
+                if (setup.box.empty()) continue;
+            }
+            // Planes is trivially copyable; its head is a prefix of its layout.
+            std::memcpy(static_cast<void*>(&planes), record + kSetupBytes, kPlaneHeadBytes);
+            const std::byte* varyings = record + kSetupBytes + kPlaneHeadBytes;
+            std::memcpy(planes.a0, varyings, n);
+            std::memcpy(planes.d1, varyings + n, n);
+            std::memcpy(planes.d2, varyings + 2 * n, n);
+            fragments += rasterize(context, setup, planes);
         }
     }
     return fragments;
@@ -92,6 +143,8 @@ void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool c
             slice.touched.clear();
         }
         slice.stats = {};
+        slice.varyings = layout.count();
+        slice.recordBytes = recordBytes(slice.varyings);
     }
     const std::size_t batch = kBatchPerThread * n;
     const int slices = static_cast<int>(n);
@@ -106,7 +159,7 @@ void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool c
                 Slice& slice = slices_[static_cast<std::size_t>(s)];
                 for (const std::uint32_t tile : slice.touched) slice.bins[tile].clear();
                 slice.touched.clear();
-                slice.records.clear();
+                slice.used = 0;
                 const std::size_t first = b0 + (b1 - b0) * static_cast<std::size_t>(s) / n;
                 const std::size_t end = b0 + (b1 - b0) * static_cast<std::size_t>(s + 1) / n;
                 drawTriangles(in, layout, cull, width, height, first, end, &binTriangle, &slice,

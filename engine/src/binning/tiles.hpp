@@ -33,15 +33,17 @@ class TileRenderer {
               RenderStats& stats);
 
   private:
-    /// A triangle (or guard-band part) ready to rasterize.
-    struct Record {
-        CoverageSetup setup;
-        Planes planes;
-    };
-    /// What one thread's slice of a batch produced: records, and per tile their indices.
-    struct Slice {
-        std::vector<Record> records;
-        std::vector<std::vector<std::uint32_t>> bins;  // one list per tile
+    /// What one thread's slice of a batch produced: packed records, and per tile their offsets.
+    /// A record is a CoverageSetup, the planes up to their varyings, and only the `varyings`
+    /// varyings the layout uses (a Planes holds room for all of them): 168 bytes unlit instead
+    /// of 296, so a batch's records stay in the core's cache until its tiles are rasterized.
+    /// Aligned to a cache line so that two threads never write to one.
+    struct alignas(64) Slice {
+        std::vector<std::byte> records;  // grown, never shrunk: a steady frame allocates nothing
+        std::size_t used = 0;            // bytes of `records` holding this batch's records
+        std::size_t recordBytes = 0;
+        int varyings = 0;
+        std::vector<std::vector<std::uint32_t>> bins;  // one list of record offsets per tile
         std::vector<std::uint32_t> touched;            // tiles with a non-empty list
         int tilesX = 0;
         RenderStats stats;

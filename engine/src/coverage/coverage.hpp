@@ -53,8 +53,17 @@ struct SnapGrid {
         const int b = std::clamp(bits, 1, kSubPixelBits);
         return {static_cast<double>(std::int64_t{1} << b), std::int64_t{1} << (kSubPixelBits - b)};
     }
-    /// `v` snapped to this grid, in 1/256 px units.
-    std::int64_t operator()(double v) const { return std::llround(v * scale) * step; }
+    /// `v` snapped to this grid, in 1/256 px units: std::llround (halves away from zero) done
+    /// inline, since the libm call was a tenth of the front end. Exact for |v·scale| < 2^52,
+    /// which the guard band ensures: the truncation and the fraction are exact in double.
+    std::int64_t operator()(double v) const {
+        const double x = v * scale;
+        auto i = static_cast<std::int64_t>(x);
+        const double fraction = x - static_cast<double>(i);
+        if (fraction >= 0.5) ++i;
+        if (fraction <= -0.5) --i;
+        return i * step;
+    }
 };
 
 /// Floor division by the grid size (arithmetic shift rounds toward -inf in C++20).

@@ -57,10 +57,10 @@ struct GuardBand {
 };
 
 /// Stage 3, project: screen positions in double; true when all three are inside the guard band.
-bool project(const ClipVertex (&tri)[3], const GuardBand& guard, glm::dvec2 (&s)[3]) {
+bool project(const glm::vec4 (&pos)[3], const GuardBand& guard, glm::dvec2 (&s)[3]) {
     bool inGuard = true;
     for (int j = 0; j < 3; ++j) {
-        s[j] = glm::dvec2(tri[j].pos.x, tri[j].pos.y) / static_cast<double>(tri[j].pos.w);
+        s[j] = glm::dvec2(pos[j].x, pos[j].y) / static_cast<double>(pos[j].w);
         inGuard = inGuard && guard.contains(s[j]);
     }
     return inGuard;
@@ -105,45 +105,41 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
         ++stats.trianglesIn;
         const Reach reach = classify(in, idx, W, H);
         if (reach == Reach::Nowhere) continue;
-        const ClipVertex v[3] = {fetchVertex(in, layout, idx[0]), fetchVertex(in, layout, idx[1]),
-                                 fetchVertex(in, layout, idx[2])};
-        // 2. Near clip: a fan of one or two triangles.
-        const NearPolygon poly = reach == Reach::InFront ? NearPolygon{{v[0], v[1], v[2]}, 3}
-                                                         : clipNear(v, in.nearPlane);
         bool clipped = reach == Reach::CrossesNear, culled = false, drawn = false;
 
-        for (std::size_t k = 1; k + 1 < poly.size; ++k) {
-            const ClipVertex tri[3] = {poly.v[0], poly.v[k], poly.v[k + 1]};
+        // One triangle of the fan: `vertices()` gives its clip vertices with their varyings,
+        // asked for only when the planes are built.
+        auto drawPart = [&](const glm::vec4(&pos)[3], auto&& vertices) {
             // 3. Project.
             glm::dvec2 s[3];
-            const bool inGuard = project(tri, guard, s);
+            const bool inGuard = project(pos, guard, s);
             int baseX = 0, baseY = 0;
             planeBase(s, W, H, baseX, baseY);
 
             if (inGuard) {
                 // 3. Snap, 4. cull, 5. planes: only for triangles that cover a pixel centre,
-                // since most triangles of a dense mesh cover none and the planes cost more than
-                // the coverage test.
+                // since most triangles of a dense mesh cover none and the planes (and the
+                // varyings they need) cost more than the coverage test.
                 CoverageSetup setup;
                 const Facing facing = snap(grid, s[0], s[1], s[2], screen, setup);
-                if (facing == Facing::Degenerate) continue;
+                if (facing == Facing::Degenerate) return;
                 if (cull && facing == Facing::Back) {
                     culled = true;
-                    continue;
+                    return;
                 }
                 drawn = true;
-                if (!setup.box.empty() && makePlanes(s, tri, count, baseX, baseY, planes))
+                if (!setup.box.empty() && makePlanes(s, vertices(), count, baseX, baseY, planes))
                     fragments += emit(context, setup, planes);
-                continue;
+                return;
             }
             // Beyond the guard band: 5. planes of the whole triangle, 4. cull, then the screen
             // triangle is clipped to the band for coverage only (3. snap per part), so
             // interpolation is unchanged.
-            if (!makePlanes(s, tri, count, baseX, baseY, planes)) continue;
+            if (!makePlanes(s, vertices(), count, baseX, baseY, planes)) return;
             clipped = true;
             if (cull && signedArea2(s) > 0.0) {
                 culled = true;
-                continue;
+                return;
             }
             const ScreenPolygon cover = clipToRect(s, guard.lo, guard.hi);
             for (std::size_t j = 1; j + 1 < cover.size; ++j) {
@@ -153,6 +149,29 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
                     continue;
                 drawn = true;
                 if (!setup.box.empty()) fragments += emit(context, setup, planes);
+            }
+        };
+
+        const glm::vec4 pos[3] = {in.clip[idx[0]], in.clip[idx[1]], in.clip[idx[2]]};
+        auto fetch = [&](ClipVertex(&v)[3]) {
+            for (int j = 0; j < 3; ++j) v[j] = fetchVertex(in, layout, idx[j]);
+        };
+        if (reach == Reach::InFront) {
+            // No copies: the triangle is its own fan, its varyings fetched on demand.
+            ClipVertex v[3];
+            drawPart(pos, [&]() -> const ClipVertex(&)[3] {
+                fetch(v);
+                return v;
+            });
+        } else {
+            // 2. Near clip: a fan of one or two triangles.
+            ClipVertex v[3];
+            fetch(v);
+            const NearPolygon poly = clipNear(v, in.nearPlane);
+            for (std::size_t k = 1; k + 1 < poly.size; ++k) {
+                const ClipVertex tri[3] = {poly.v[0], poly.v[k], poly.v[k + 1]};
+                const glm::vec4 fanPos[3] = {tri[0].pos, tri[1].pos, tri[2].pos};
+                drawPart(fanPos, [&]() -> const ClipVertex(&)[3] { return tri; });
             }
         }
         stats.trianglesClipped += clipped ? 1 : 0;
