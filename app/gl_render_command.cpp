@@ -28,6 +28,12 @@ int runGlRender(const RenderOptions& o) {
     RenderSettings settings;
     if (const int code = prepareRender(o, "facet render-gl", scene, settings); code != kOk)
         return code;
+    if (settings.view != DebugView::None) {
+        std::fprintf(stderr,
+                     "facet render-gl: --view is drawn by the CPU engine only (facet "
+                     "render)\n");
+        return kBadInput;
+    }
 
     Result<GlContext> context = GlContext::createHeadless();
     if (!context) return failed(context.error().what());

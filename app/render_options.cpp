@@ -104,6 +104,14 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "(anti-aliasing; solid mode; CPU engine)")
         ->check(CLI::Range(1, 4))
         ->capture_default_str();
+    cmd.add_option("--view", o.view,
+                   "Debug view instead of the shaded image, a heat map with a legend: overdraw "
+                   "(fragments per pixel), triangle-size (pixels of the triangle that wrote "
+                   "each pixel), bin-load (triangles per 64x64 tile), depth-test (passed, "
+                   "failed, no fragment), texture-lod (mip level under trilinear), interp-error "
+                   "(affine against perspective, 8-bit steps); CPU engine")
+        ->check(CLI::IsMember(choices(debugViewNames())))
+        ->capture_default_str();
     cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
 }
 
@@ -133,6 +141,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.threads = o.threads;
     settings.subPixelBits = o.subPixelBits;
     settings.supersample = o.supersample;
+    settings.view = *parseDebugView(o.view);
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 

@@ -37,7 +37,8 @@ struct RenderOptions {
     int frames = 1;
     int threads = 0;
     int subPixelBits = kMaxSubPixelBits;
-    int supersample = 1;  ///< samples per pixel axis (supersampling), 1…4
+    int supersample = 1;        ///< samples per pixel axis (supersampling), 1…4
+    std::string view = "none";  ///< --view: a debug view instead of the shaded image
 };
 
 /// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.

@@ -15,6 +15,11 @@
 
 #include <gtest/gtest.h>
 
+#include "facet/camera.hpp"
+#include "facet/render.hpp"
+#include "facet/scene_io.hpp"
+#include "facet/settings.hpp"
+#include "facet/texture.hpp"
 #include "shared_data.hpp"
 
 namespace {
@@ -212,8 +217,43 @@ TEST_F(Cli, HelpListsTheOptions) {
     EXPECT_EQ(r.exitCode, 0);
     for (const char* opt : {"--mode", "--shader", "--interp", "--lighting", "--cull", "--size",
                             "--background", "--texture", "--filter", "--combine", "--normals",
-                            "--normal-length", "--legend", "subdivided"})
+                            "--normal-length", "--legend", "subdivided", "--view", "bin-load"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+// --view NAME writes the debug view: the PNG holds exactly the image Renderer::render() makes
+// with that view (heat map and legend), which is not the shaded image; a wrong name and the
+// OpenGL twin (which has no debug views) are bad input.
+TEST_F(Cli, ViewWritesTheDebugView) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    facet::Result<facet::Scene> loaded = facet::loadScene(scene);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().what();
+    facet::Scene s = std::move(loaded).value();
+    s.camera = facet::resizedCamera(s.camera, 200, 150);
+    facet::Renderer renderer;
+    facet::Framebuffer shaded;
+    renderer.render(s, {}, shaded);
+    for (const std::string_view name : facet::debugViewNames()) {
+        const std::string png = out(std::string(name) + ".png");
+        const Outcome r =
+            run("render " + scene + " --size 200x150 --view " + std::string(name) + " -o " + png);
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.out;
+        facet::Result<facet::Texture> written = facet::loadTexture(png);
+        ASSERT_TRUE(written.ok()) << name;
+        facet::RenderSettings settings;
+        settings.view = *facet::parseDebugView(name);
+        facet::Framebuffer expected;
+        renderer.render(s, settings, expected);
+        EXPECT_EQ(written.value().level(0).texels, expected.color) << name;
+        if (name != "none") EXPECT_NE(expected.color, shaded.color) << name;
+    }
+    const Outcome bad = run("render " + scene + " --view heat -o " + out("x.png"));
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_EQ(countLines(bad.out), 1) << bad.out;
+    EXPECT_NE(bad.out.find("--view"), std::string::npos) << bad.out;
+    const Outcome gl = run("render-gl " + scene + " --view overdraw -o " + out("x.png"));
+    EXPECT_EQ(gl.exitCode, 2) << gl.out;
+    EXPECT_NE(gl.out.find("CPU engine"), std::string::npos) << gl.out;
 }
 
 TEST_F(Cli, GenerateWritesAMeshTheRendererLoads) {

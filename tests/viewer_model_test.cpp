@@ -345,7 +345,9 @@ TEST(ViewerOptions, ParsesTheTestAndBenchmarkOptions) {
                                    "--keep-scene-size",
                                    "--cull",
                                    "--combine",
-                                   "--normals"});
+                                   "--normals",
+                                   "--view",
+                                   "depth-test"});
     ASSERT_FALSE(p.exit) << p.text;
     const ViewerOptions& o = p.options;
     EXPECT_EQ(o.scene, "my.scene");
@@ -364,6 +366,8 @@ TEST(ViewerOptions, ParsesTheTestAndBenchmarkOptions) {
     EXPECT_EQ(s.subdivision, 8);
     EXPECT_EQ(s.lighting, Lighting::Phong);
     EXPECT_TRUE(s.cullBackFaces && s.combine && s.showNormals);
+    EXPECT_EQ(s.view, facet::DebugView::DepthTest);
+    EXPECT_TRUE(parse({"--view", "heat"}).exit);
 }
 
 TEST(ViewerOptions, TheRendererChoiceAndHowItGoesWithCompare) {
@@ -485,6 +489,9 @@ TEST(ViewerState, TextHoldsTheViewLightAndMaterial) {
     EXPECT_NE(state.at("material").find(" 0.25 "), std::string::npos) << state.at("material");
     EXPECT_EQ(state.at("scene"), m.scene.path);
     EXPECT_EQ(state.at("renderer"), "cpu");
+    EXPECT_EQ(state.at("view"), "none");
+    m.settings.view = facet::DebugView::BinLoad;
+    EXPECT_EQ(parseState(stateText(m, 1)).at("view"), "bin-load");
     m.rendererChoice = RendererChoice::Split;
     EXPECT_EQ(parseState(stateText(m, 1)).at("renderer"), "split");
     EXPECT_TRUE(writeTextFile("/no/such/folder/state.txt", "x"));

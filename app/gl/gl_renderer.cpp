@@ -189,6 +189,8 @@ std::string GlRenderer::differences(const RenderSettings& settings) {
         lines += "trilinear: GL picks the mip level per 2x2 pixels, with 8-bit fractions\n";
     if (settings.mode == DrawMode::Wireframe || settings.showNormals)
         lines += "lines follow GL's rules, not Bresenham: a few line pixels differ\n";
+    if (settings.view != DebugView::None)
+        lines += "debug views are the CPU engine's: the twin draws the shaded image\n";
     if (settings.mode == DrawMode::Solid && settings.supersample > 1)
         lines += "one sample per pixel: the twin does not supersample\n";
     if (settings.mode == DrawMode::Solid && settings.subPixelBits != kMaxSubPixelBits)

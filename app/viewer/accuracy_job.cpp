@@ -32,7 +32,10 @@ std::string percent(double fraction) {
 
 AccuracyView accuracyView(const Scene& scene, std::uint64_t sceneVersion,
                           const RenderSettings& settings) {
-    return {{sceneVersion, scene.texture, scene.camera, scene.lighting}, settings};
+    // Accuracy is of the shaded image: a debug view on screen changes nothing here.
+    RenderSettings shaded = settings;
+    shaded.view = DebugView::None;
+    return {{sceneVersion, scene.texture, scene.camera, scene.lighting}, shaded};
 }
 
 bool sameMethod(const RenderSettings& a, const RenderSettings& b) {

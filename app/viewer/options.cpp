@@ -88,6 +88,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         ->check(CLI::IsMember(choices(filterNames())))
         ->capture_default_str();
     app.add_flag("--combine", o.combine, "Texture shader: texel times the (lit) vertex colour");
+    app.add_option("--view", o.view, "Debug view instead of the shaded image (README, Debug views)")
+        ->check(CLI::IsMember(choices(debugViewNames())))
+        ->capture_default_str();
     app.add_flag("--cull", o.cull, "Drop back faces");
     app.add_flag("--normals", o.normals, "Draw the vertex normals");
     try {
@@ -136,8 +139,9 @@ Status applyOptions(const ViewerOptions& o, RenderSettings& settings) {
     const auto lighting =
         o.lighting.empty() ? std::optional(settings.lighting) : parseLighting(o.lighting);
     const auto filter = parseFilter(o.filter);
-    if (!mode || !shader || !interp || !lighting || !filter)
-        return Error{{}, "unknown mode, shader, interpolation, lighting or filter name"};
+    const auto view = parseDebugView(o.view);
+    if (!mode || !shader || !interp || !lighting || !filter || !view)
+        return Error{{}, "unknown mode, shader, interpolation, lighting, filter or view name"};
     settings.mode = *mode;
     settings.shader = *shader;
     settings.interp = interp->interp;
@@ -147,6 +151,7 @@ Status applyOptions(const ViewerOptions& o, RenderSettings& settings) {
     settings.combine = settings.combine || o.combine;
     settings.cullBackFaces = o.cull;
     settings.showNormals = o.normals;
+    settings.view = *view;
     return std::nullopt;
 }
 

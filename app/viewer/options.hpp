@@ -36,6 +36,7 @@ struct ViewerOptions {
     std::string interp = "perspective";
     std::string lighting;
     std::string filter = "bilinear";
+    std::string view = "none";  ///< --view: a debug view (debugViewNames())
     bool combine = false;
     bool cull = false;
     bool normals = false;

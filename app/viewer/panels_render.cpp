@@ -19,6 +19,30 @@
 namespace facet::view {
 namespace {
 
+/// What the debug view counts, in one or two lines under its combo.
+const char* debugViewHelp(DebugView view) {
+    switch (view) {
+        case DebugView::Overdraw:
+            return "fragments per pixel: every fragment that reached the depth test";
+        case DebugView::TriangleSize:
+            return "pixels of the triangle that wrote each pixel (log scale)";
+        case DebugView::BinLoad:
+            return "triangles binned in each 64x64 tile (darker lines: tile borders)";
+        case DebugView::DepthTest:
+            return "green: every fragment passed; red: some fragment failed (hidden by an "
+                   "earlier, nearer one); black: no fragment";
+        case DebugView::TextureLod:
+            return "mip level of the fragment that wrote each pixel, under the texture shader "
+                   "with trilinear filtering";
+        case DebugView::InterpError:
+            return "largest channel difference, in 8-bit steps, between affine and perspective "
+                   "interpolation of these settings";
+        case DebugView::None:
+            break;
+    }
+    return "";
+}
+
 /// The renderer combo, and the twin's departures from the engine for these settings.
 void rendererPicker(App& app) {
     static const auto names = rendererNames();
@@ -127,6 +151,14 @@ void renderPanel(App& app) {
                 s.supersample = ss + 1;
         }
         ImGui::EndDisabled();
+    }
+    {
+        // Debug views: the frame coloured by what the pipeline did, with a legend in the frame.
+        static const auto views = debugViewNames();
+        int view = nameIndex(views, toString(s.view));
+        if (comboNames("debug view", views, view))
+            s.view = parseDebugView(views[static_cast<std::size_t>(view)]).value_or(s.view);
+        if (s.view != DebugView::None) ImGui::TextWrapped("%s", debugViewHelp(s.view));
     }
     float rgb[3];
     rgbFromHex(s.background, rgb);

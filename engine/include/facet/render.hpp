@@ -21,6 +21,7 @@
 namespace facet {
 
 class Texture;
+struct DebugMap;
 
 /// Geometry already in clip space (see camera.hpp), as one draw consumes it. Only the streams
 /// the settings need are read: colours for every shader but Depth (and Texture without
@@ -71,8 +72,14 @@ class Renderer {
     Renderer(Renderer&&) noexcept;
     Renderer& operator=(Renderer&&) noexcept;
 
-    /// Clears `frame` (resized to the camera's image) and renders the scene into it.
+    /// Clears `frame` (resized to the camera's image) and renders the scene into it; with a
+    /// debug view (settings.view), the view's heat map and legend (debug_view.hpp).
     RenderStats render(const Scene& scene, const RenderSettings& settings, Framebuffer& frame);
+
+    /// Renders the frame settings.view looks at (the settings of debugViewBase: solid, one
+    /// sample) into `frame` and measures the view into `map` with an instrumented draw of it.
+    RenderStats renderDebugView(const Scene& scene, const RenderSettings& settings,
+                                Framebuffer& frame, DebugMap& map);
 
     /// Draws clip-space geometry into `frame` without clearing it. With the Depth shader the
     /// depth-to-colour pass runs over the whole frame afterwards.

@@ -30,6 +30,10 @@ enum class Lighting { Off, Gouraud, Phong };
 /// derivatives of (u, v).
 enum class TextureFilter { Nearest, Bilinear, Trilinear };
 
+/// Debug views (README, "Debug views"): the frame coloured by what the pipeline did at each
+/// pixel instead of by the shader, with a legend. None is the normal image.
+enum class DebugView { None, Overdraw, TriangleSize, BinLoad, DepthTest, TextureLod, InterpError };
+
 /// Smallest and largest span of the Subdivided interpolation, in pixels.
 inline constexpr int kMinSubdivision = 2;
 inline constexpr int kMaxSubdivision = 256;
@@ -60,6 +64,7 @@ struct RenderSettings {
     /// Samples per pixel axis, 1…4 (clamped): the frame is rendered at N×N the size and each
     /// N×N block averaged (supersampling); Solid mode only, lines and points stay one sample.
     int supersample = 1;
+    DebugView view = DebugView::None;  ///< a debug view instead of the shaded image
 
     /// Every field equal (the viewer's "did anything change" and "same method" checks).
     bool operator==(const RenderSettings&) const = default;
@@ -71,6 +76,7 @@ std::optional<ShaderKind> parseShader(std::string_view name);
 std::optional<Interp> parseInterp(std::string_view name);
 std::optional<Lighting> parseLighting(std::string_view name);
 std::optional<TextureFilter> parseFilter(std::string_view name);
+std::optional<DebugView> parseDebugView(std::string_view name);
 
 /// An interpolation as the CLI spells it: "affine", "perspective", "subdivided" (N = 16) or
 /// "subdivided:N" with N in 2…256.
@@ -89,6 +95,7 @@ std::vector<std::string_view> shaderNames();
 std::vector<std::string_view> interpNames();
 std::vector<std::string_view> lightingNames();
 std::vector<std::string_view> filterNames();
+std::vector<std::string_view> debugViewNames();
 
 /// Lower-case names for messages and UI.
 std::string_view toString(DrawMode mode);
@@ -96,5 +103,6 @@ std::string_view toString(ShaderKind shader);
 std::string_view toString(Interp interp);
 std::string_view toString(Lighting lighting);
 std::string_view toString(TextureFilter filter);
+std::string_view toString(DebugView view);
 
 }  // namespace facet

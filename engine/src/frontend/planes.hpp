@@ -25,6 +25,8 @@ struct Planes {
     static float eval(const float (&p)[3], float dx, float dy) {
         return p[0] + p[1] * dx + p[2] * dy;
     }
+    /// The fragment's depth (camera-space z, the reciprocal of interpolated 1/w) there.
+    float depthAt(float dx, float dy) const { return 1.0f / eval(q, dx, dy); }
 };
 
 /// Twice the signed area of a screen triangle; positive means back-facing (y-down pixels).

@@ -10,7 +10,10 @@
 #include <limits>
 
 #include "binning/tiles.hpp"
+#include "debug/debug_maps.hpp"
+#include "debug/probe.hpp"
 #include "facet/camera.hpp"
+#include "facet/debug_view.hpp"
 #include "facet/legend.hpp"
 #include "facet/render.hpp"
 #include "lines/lines_points.hpp"
@@ -35,8 +38,11 @@ struct Renderer::Impl {
     std::vector<std::uint64_t> edgeKeys;
     std::uint64_t edgesFingerprint = 0;
     NormalsOverlay normalsOverlay;
-    TileRenderer tiles;        // bins kept between frames
-    Framebuffer supersampled;  // the N×N-size image of a supersampled frame
+    TileRenderer tiles;                  // bins kept between frames
+    Framebuffer supersampled;            // the N×N-size image of a supersampled frame
+    DrawProbe probe;                     // the debug views' instrumented draw
+    Framebuffer affine;                  // the interpolation-error view's second frame
+    std::vector<std::uint32_t> binLoad;  // the bin-load view's counts per tile
 
     void updateEdges(std::span<const std::uint32_t> indices) {
         // The edge list is rebuilt (a sort) only when the indices change.
@@ -46,8 +52,11 @@ struct Renderer::Impl {
         edgesFingerprint = h;
     }
 
+    /// One frame at the camera's size; `input`, when given, receives the draw's input (valid
+    /// until the next frame).
     RenderStats renderView(Renderer& renderer, const Scene& scene, const Camera& camera,
-                           const RenderSettings& settings, Framebuffer& frame);
+                           const RenderSettings& settings, Framebuffer& frame,
+                           DrawInput* input = nullptr);
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
@@ -154,6 +163,14 @@ void Renderer::countCoverage(const DrawInput& input, const RenderSettings& setti
 
 RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
                              Framebuffer& frame) {
+    if (settings.view != DebugView::None) {
+        DebugMap map;
+        RenderStats stats = renderDebugView(scene, settings, frame, map);
+        Clock::time_point t = Clock::now();
+        paintDebugView(map, frame);
+        stats.postMs += msSince(t);
+        return stats;
+    }
     const int n = std::clamp(settings.supersample, 1, kMaxSupersample);
     if (n == 1 || settings.mode != DrawMode::Solid)
         return impl_->renderView(*this, scene, scene.camera, settings, frame);
@@ -171,8 +188,47 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     return stats;
 }
 
+RenderStats Renderer::renderDebugView(const Scene& scene, const RenderSettings& settings,
+                                      Framebuffer& frame, DebugMap& map) {
+    const RenderSettings base = debugViewBase(settings);
+    DrawInput input;
+    RenderStats stats = impl_->renderView(*this, scene, scene.camera, base, frame, &input);
+    Clock::time_point t = Clock::now();
+    switch (settings.view) {
+        case DebugView::BinLoad:
+            countBinLoad(impl_->tiles, input, base, frame.width, frame.height, impl_->binLoad);
+            fillBinLoad(impl_->binLoad, frame.width, frame.height, map);
+            break;
+        case DebugView::InterpError: {
+            RenderSettings affine = base;
+            affine.interp = Interp::Affine;
+            RenderSettings perspective = base;
+            perspective.interp = Interp::Perspective;
+            if (base.interp != Interp::Perspective)
+                stats = impl_->renderView(*this, scene, scene.camera, perspective, frame);
+            impl_->renderView(*this, scene, scene.camera, affine, impl_->affine);
+            fillInterpError(frame, impl_->affine, map);
+            break;
+        }
+        case DebugView::None:
+            map = DebugMap{};
+            break;
+        default: {
+            const bool lod = settings.view == DebugView::TextureLod;
+            RenderStats probeStats;
+            impl_->probe.run(input, base, frame.width, frame.height, lod, probeStats);
+            const Texture& texture = input.texture ? *input.texture : whiteTexture();
+            fillFromProbe(settings.view, impl_->probe, texture.levelCount(), map);
+            break;
+        }
+    }
+    stats.postMs += msSince(t);
+    return stats;
+}
+
 RenderStats Renderer::Impl::renderView(Renderer& renderer, const Scene& scene, const Camera& cam,
-                                       const RenderSettings& settings, Framebuffer& frame) {
+                                       const RenderSettings& settings, Framebuffer& frame,
+                                       DrawInput* inputOut) {
     // Clear.
     Clock::time_point t = Clock::now();
     frame.resize(cam.width, cam.height);
@@ -201,6 +257,8 @@ RenderStats Renderer::Impl::renderView(Renderer& renderer, const Scene& scene, c
     }
     if (settings.shader == ShaderKind::Texture) input.uvs = mesh.uvs;
     const double vertexMs = msSince(t);
+
+    if (inputOut) *inputOut = input;
 
     // The draw, then the passes after it.
     RenderStats stats = renderer.draw(input, settings, frame);

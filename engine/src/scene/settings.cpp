@@ -35,6 +35,15 @@ constexpr std::array<std::pair<std::string_view, TextureFilter>, 3> kFilters{{
     {"bilinear", TextureFilter::Bilinear},
     {"trilinear", TextureFilter::Trilinear},
 }};
+constexpr std::array<std::pair<std::string_view, DebugView>, 7> kViews{{
+    {"none", DebugView::None},
+    {"overdraw", DebugView::Overdraw},
+    {"triangle-size", DebugView::TriangleSize},
+    {"bin-load", DebugView::BinLoad},
+    {"depth-test", DebugView::DepthTest},
+    {"texture-lod", DebugView::TextureLod},
+    {"interp-error", DebugView::InterpError},
+}};
 
 template <class E, std::size_t N>
 std::optional<E> lookup(const std::array<std::pair<std::string_view, E>, N>& table,
@@ -76,6 +85,10 @@ std::vector<std::string_view> filterNames() {
     return namesOf(kFilters);
 }
 
+std::vector<std::string_view> debugViewNames() {
+    return namesOf(kViews);
+}
+
 std::optional<DrawMode> parseDrawMode(std::string_view name) {
     return lookup(kModes, name);
 }
@@ -90,6 +103,9 @@ std::optional<Lighting> parseLighting(std::string_view name) {
 }
 std::optional<TextureFilter> parseFilter(std::string_view name) {
     return lookup(kFilters, name);
+}
+std::optional<DebugView> parseDebugView(std::string_view name) {
+    return lookup(kViews, name);
 }
 
 std::optional<InterpSpec> parseInterpSpec(std::string_view text) {
@@ -123,6 +139,9 @@ std::string_view toString(Lighting lighting) {
 }
 std::string_view toString(TextureFilter filter) {
     return nameOf(kFilters, filter);
+}
+std::string_view toString(DebugView view) {
+    return nameOf(kViews, view);
 }
 
 }  // namespace facet

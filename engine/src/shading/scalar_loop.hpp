@@ -27,6 +27,26 @@ inline bool perspectiveWeights(const Planes& p, float dx, float dy, float& m1, f
     return true;
 }
 
+/// The mip level trilinear filtering samples at (dx, dy), whose depth is `depth`: from the
+/// derivatives of the weights of interpolation I (constant when affine, the analytic derivative
+/// of the perspective-correct weights otherwise) applied to the uv varying at `uv`.
+template <Interp I>
+inline float uvLevelOfDetail(const Planes& p, float dx, float dy, float depth, int uv,
+                             const Texture& texture) {
+    float w1x = p.l1[1], w1y = p.l1[2], w2x = p.l2[1], w2y = p.l2[2];
+    if constexpr (I != Interp::Affine) {
+        const float pm1 = Planes::eval(p.u1, dx, dy) * depth;
+        const float pm2 = Planes::eval(p.u2, dx, dy) * depth;
+        w1x = (p.u1[1] - pm1 * p.q[1]) * depth;
+        w1y = (p.u1[2] - pm1 * p.q[2]) * depth;
+        w2x = (p.u2[1] - pm2 * p.q[1]) * depth;
+        w2y = (p.u2[2] - pm2 * p.q[2]) * depth;
+    }
+    const auto u = static_cast<std::size_t>(uv);
+    const glm::vec2 d1(p.d1[u], p.d1[u + 1]), d2(p.d2[u], p.d2[u + 1]);
+    return mipLevel(texture, d1 * w1x + d2 * w2x, d1 * w1y + d2 * w2y);
+}
+
 /// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
 template <class V>
 [[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
@@ -48,7 +68,7 @@ template <class V>
         ++fragments;
         const auto dx = static_cast<float>(x - p.baseX);
         const auto dy = static_cast<float>(y - p.baseY);
-        const float depth = 1.0f / Planes::eval(p.q, dx, dy);
+        const float depth = p.depthAt(dx, dy);
         const std::size_t i = fb.index(x, y);
         if (!passesDepth<V::kShader>(fb, i, depth)) return;
 
@@ -81,24 +101,8 @@ template <class V>
         for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
 
         float lod = 0.0f;
-        if constexpr (V::kDerivatives) {
-            // d(weights)/dx and /dy of the mode's own interpolation: constant when affine, the
-            // analytic derivative of the perspective-correct weights otherwise.
-            float w1x = p.l1[1], w1y = p.l1[2], w2x = p.l2[1], w2y = p.l2[2];
-            if constexpr (V::kInterp != Interp::Affine) {
-                // The perspective weights at this pixel: already m1, m2 unless subdivided.
-                constexpr bool exact = V::kInterp == Interp::Perspective;
-                const float pm1 = exact ? m1 : Planes::eval(p.u1, dx, dy) * depth;
-                const float pm2 = exact ? m2 : Planes::eval(p.u2, dx, dy) * depth;
-                w1x = (p.u1[1] - pm1 * p.q[1]) * depth;
-                w1y = (p.u1[2] - pm1 * p.q[2]) * depth;
-                w2x = (p.u2[1] - pm2 * p.q[1]) * depth;
-                w2y = (p.u2[2] - pm2 * p.q[2]) * depth;
-            }
-            const int u = L.uvAt();
-            const glm::vec2 d1(p.d1[u], p.d1[u + 1]), d2(p.d2[u], p.d2[u + 1]);
-            lod = mipLevel(*k.texture, d1 * w1x + d2 * w2x, d1 * w1y + d2 * w2y);
-        }
+        if constexpr (V::kDerivatives)
+            lod = uvLevelOfDetail<V::kInterp>(p, dx, dy, depth, L.uvAt(), *k.texture);
         storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
     });
     return fragments;
