@@ -13,6 +13,7 @@
 #include "file_list.hpp"
 #include "frame_stats.hpp"
 #include "gl_frame.hpp"
+#include "inspector.hpp"
 #include "layout.hpp"
 #include "load_job.hpp"
 #include "options.hpp"
@@ -91,6 +92,7 @@ struct App {
     bool screenshotRequested = false;  ///< from the key or the button; taken this frame
     bool vsyncApplied = true;          ///< the swap interval last set
     AccuracyJob accuracy;              ///< Compare: the methods against the ground truth
+    InspectorState inspector;          ///< the pixel inspector (Shift + click)
     LoadJob loading;                   ///< a scene or mesh being opened on a worker thread
     std::uint64_t accuracySeen = 0;    ///< reports announced on stdout so far
     /// The view and Compare settings the engine last rendered, so a frame can be skipped while

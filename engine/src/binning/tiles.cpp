@@ -13,18 +13,6 @@ namespace {
 /// batch cost little, small enough that a batch's records (about 300 bytes each) stay in cache.
 constexpr std::size_t kBatchPerThread = 8192;
 
-/// The setup restricted to `rect`; the edge values move to the new first pixel exactly, in
-/// integers, so coverage inside the rectangle is unchanged.
-CoverageSetup clipSetup(const CoverageSetup& s, const PixelRect& rect) {
-    CoverageSetup out = s;
-    out.box = {std::max(s.box.x0, rect.x0), std::max(s.box.y0, rect.y0),
-               std::min(s.box.x1, rect.x1), std::min(s.box.y1, rect.y1)};
-    if (out.box.empty()) return out;
-    const std::int64_t dx = out.box.x0 - s.box.x0, dy = out.box.y0 - s.box.y0;
-    for (int i = 0; i < 3; ++i) out.e0[i] = s.e0[i] + dx * s.stepX[i] + dy * s.stepY[i];
-    return out;
-}
-
 void addCounters(RenderStats& to, const RenderStats& from) {
     to.trianglesIn += from.trianglesIn;
     to.trianglesCulled += from.trianglesCulled;
@@ -66,7 +54,7 @@ std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int hei
         const Slice& slice = slices_[s];
         for (const std::uint32_t r : slice.bins[static_cast<std::size_t>(tile)]) {
             const Record& record = slice.records[r];
-            const CoverageSetup part = clipSetup(record.setup, rect);
+            const CoverageSetup part = restrictSetup(record.setup, rect);
             if (!part.box.empty()) fragments += rasterize(context, part, record.planes);
         }
     }

@@ -60,7 +60,7 @@ struct GuardBand {
 bool project(const ClipVertex (&tri)[3], const GuardBand& guard, glm::dvec2 (&s)[3]) {
     bool inGuard = true;
     for (int j = 0; j < 3; ++j) {
-        s[j] = glm::dvec2(tri[j].pos.x, tri[j].pos.y) / static_cast<double>(tri[j].pos.w);
+        s[j] = screenPosition(tri[j].pos);
         inGuard = inGuard && guard.contains(s[j]);
     }
     return inGuard;
