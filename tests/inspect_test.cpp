@@ -261,6 +261,15 @@ std::vector<RealCase> realCases() {
              s.subPixelBits = 4;
          }),
          "cull_4bits"},
+        {"scenes/bunny_1280x720", with([](RenderSettings& s) { s.lighting = Lighting::Gouraud; }),
+         "bunny_gouraud"},
+        {"scenes/spot_1280x720", with([](RenderSettings& s) {
+             s.shader = ShaderKind::Texture;
+             s.filter = TextureFilter::Trilinear;
+             s.combine = true;
+             s.lighting = Lighting::Phong;
+         }),
+         "spot_trilinear_combine_phong"},
         {"course/example1", with([](RenderSettings& s) {
              s.supersample = 2;
              s.lighting = Lighting::Phong;
@@ -279,8 +288,9 @@ TEST_P(InspectRealScene, FinalColourIsTheFramesPixelAtManyPixels) {
     ASSERT_TRUE(loaded) << loaded.error().what();
     Scene scene = std::move(loaded).value();
     // The course's textured scene names no image: the course's brick, as its tests use.
-    if (c.settings.shader == ShaderKind::Texture && !scene.texture)
+    if (c.settings.shader == ShaderKind::Texture && !scene.texture) {
         ASSERT_FALSE(loadSceneTexture(scene, test::sharedData("course/brick.jpg")));
+    }
     // A smaller frame keeps the test quick; every pixel is still a real one of that frame.
     scene.camera = resizedCamera(scene.camera, 160, 120);
     Renderer renderer;
@@ -301,15 +311,16 @@ TEST_P(InspectRealScene, FinalColourIsTheFramesPixelAtManyPixels) {
     for (const auto& [x, y] : pixels) {
         const PixelHistory h = inspectPixel(scene, c.settings, x, y);
         EXPECT_EQ(h.finalColor, frame.color[frame.index(x, y)]) << "pixel " << x << ", " << y;
-        if (c.settings.supersample == 1)
+        if (c.settings.supersample == 1) {
             EXPECT_EQ(h.finalDepth, frame.depth[frame.index(x, y)]) << "pixel " << x << ", " << y;
+        }
         withFragments += coveredCount(h) > 0 ? 1 : 0;
     }
     EXPECT_GT(withFragments, 30);  // the test looked at drawn pixels, not only background
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, InspectRealScene, ::testing::ValuesIn(realCases()),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& param) { return std::string(param.param.name); });
 
 Scene loadShared(const std::string& relative, int width, int height) {
     Result<Scene> loaded = loadScene(test::sharedData(relative));
@@ -339,7 +350,9 @@ TEST(Inspect, LightingTermsSumToTheIntensityThatLitTheColour) {
                 ASSERT_TRUE(f.lit);
                 const InspectedLighting& l = f.lighting;
                 EXPECT_NEAR(l.ambient + l.diffuse + l.specular, l.intensity, 1e-5f);
-                if (l.nDotL <= 0.0f) EXPECT_EQ(l.diffuse + l.specular, 0.0f);
+                if (l.nDotL <= 0.0f) {
+                    EXPECT_EQ(l.diffuse + l.specular, 0.0f);
+                }
                 EXPECT_GE(l.nDotH, 0.0f);
                 EXPECT_LE(l.nDotH, 1.0f);
                 for (int k = 0; k < 3; ++k)
@@ -377,13 +390,19 @@ TEST(Inspect, TexelWeightsSumToOneAndBlendToTheTextureColour) {
                     }
                     EXPECT_NEAR(sum, 1.0f, 1e-5f);
                     for (int k = 0; k < 3; ++k) EXPECT_NEAR(blend[k], f.shaded[k], 1e-4f);
-                    if (filter == TextureFilter::Nearest) EXPECT_EQ(f.texels.size(), 1u);
-                    if (filter != TextureFilter::Trilinear) EXPECT_EQ(f.lod, 0.0f);
+                    if (filter == TextureFilter::Nearest) {
+                        EXPECT_EQ(f.texels.size(), 1u);
+                    }
+                    if (filter != TextureFilter::Trilinear) {
+                        EXPECT_EQ(f.lod, 0.0f);
+                    }
                     ++checked;
                 }
             }
         EXPECT_GT(checked, 20) << toString(filter);
-        if (filter == TextureFilter::Trilinear) EXPECT_GT(twoLevels, 0);
+        if (filter == TextureFilter::Trilinear) {
+            EXPECT_GT(twoLevels, 0);
+        }
     }
 }
 

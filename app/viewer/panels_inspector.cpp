@@ -87,7 +87,8 @@ constexpr ImGuiTableFlags kTable =
 
 void vertexTable(const InspectedFragment& f) {
     if (!ImGui::BeginTable("vertices", 6, kTable)) return;
-    for (const char* h : {"", "index", "world", "clip (x, y, z, w)", "screen px", "fixed 1/256 px"})
+    for (const char* h :
+         {"", "index", "world", "clip x, y, w (= z)", "screen px", "fixed 1/256 px"})
         ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
     for (int j = 0; j < 3; ++j) {
@@ -96,7 +97,8 @@ void vertexTable(const InspectedFragment& f) {
         cell("%s", vertexName(j));
         cell("%u", v.index);
         cell("%.3f %.3f %.3f", v.world.x, v.world.y, v.world.z);
-        cell("%.1f %.1f %.3f %.3f", v.clip.x, v.clip.y, v.clip.z, v.clip.w);
+        // Clip z is the depth, as w is (camera.hpp): one column for both.
+        cell("%.1f %.1f %.3f", v.clip.x, v.clip.y, v.clip.w);
         cell("%.3f %.3f", v.screen.x, v.screen.y);
         cell("%lld %lld", static_cast<long long>(v.fixedX), static_cast<long long>(v.fixedY));
     }
@@ -110,7 +112,7 @@ void edgeTable(const InspectedFragment& f) {
     ImGui::TableHeadersRow();
     for (const InspectedEdge& e : f.edges) {
         ImGui::TableNextRow();
-        cell("%s→%s", vertexName(e.from), vertexName(e.to));
+        cell("%s->%s", vertexName(e.from), vertexName(e.to));
         cell("%lld", static_cast<long long>(e.value));
         cell("%s", e.topLeft ? "yes" : "no");
         ImGui::TableNextColumn();
@@ -286,8 +288,8 @@ void drawMarker(const App& app, const PixelHistory& h) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const ImU32 dark = IM_COL32(0, 0, 0, 220), bright = IM_COL32(255, 230, 60, 255);
     const ImVec2 a(centre.x - r, centre.y - r), b(centre.x + r, centre.y + r);
-    draw->AddRect(a, b, dark, 0.0f, 0, 3.0f);
-    draw->AddRect(a, b, bright, 0.0f, 0, 1.5f);
+    draw->AddRect(a, b, dark, 0.0f, 0, 4.0f);
+    draw->AddRect(a, b, bright, 0.0f, 0, 2.0f);
     // Ticks pointing at the pixel from outside, so a small marker is found on a busy picture.
     const float t = 2.5f * r;
     const ImVec2 ends[4][2] = {{{centre.x - t, centre.y}, {centre.x - r - 2, centre.y}},
@@ -295,8 +297,8 @@ void drawMarker(const App& app, const PixelHistory& h) {
                                {{centre.x, centre.y - t}, {centre.x, centre.y - r - 2}},
                                {{centre.x, centre.y + r + 2}, {centre.x, centre.y + t}}};
     for (const auto& e : ends) {
-        draw->AddLine(e[0], e[1], dark, 3.0f);
-        draw->AddLine(e[0], e[1], bright, 1.5f);
+        draw->AddLine(e[0], e[1], dark, 4.0f);
+        draw->AddLine(e[0], e[1], bright, 2.0f);
     }
 }
 
@@ -306,8 +308,9 @@ void inspectPixelAt(App& app, int x, int y) {
     InspectorState& s = app.inspector;
     const auto t0 = std::chrono::steady_clock::now();
     s.history = inspectPixel(app.model.scene, app.model.settings, x, y);
-    s.truth =
-        renderGroundTruthPixel(app.model.scene, app.model.settings, x, y, app.ui.accuracySamples);
+    // 8×8 for one pixel costs what 64 reference pixels cost: no need for the Compare panel's
+    // coarser setting.
+    s.truth = renderGroundTruthPixel(app.model.scene, app.model.settings, x, y);
     s.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     s.view = accuracyView(app.model.scene, app.model.sceneVersion, app.model.settings);
     s.valid = true;
@@ -339,7 +342,7 @@ void inspectorWindow(App& app) {
     const Rect& image = app.work.layout.image;
     const float scale = app.work.scale;
     const float margin = 10.0f * scale;
-    const float width = std::min(560.0f * scale, static_cast<float>(image.w) - 2.0f * margin);
+    const float width = std::min(600.0f * scale, static_cast<float>(image.w) - 2.0f * margin);
     const float height = static_cast<float>(image.h) - 2.0f * margin;
     const Camera& c = app.model.scene.camera;
     const bool pixelOnRight = c.width > 0 && s.history.x * 2 >= c.width;
