@@ -27,4 +27,7 @@ void addAccuracyCommand(CLI::App& app, int& exitCode);
 /// `facet sweeps [--out DIR] [--only NAME,...] [--quick] [--no-chart]`: the stability sweeps.
 void addSweepsCommand(CLI::App& app, int& exitCode);
 
+/// `facet inspect SCENE X Y [render options]`: one pixel's history, fragment by fragment.
+void addInspectCommand(CLI::App& app, int& exitCode);
+
 }  // namespace facet::app

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     facet::app::addBenchCommand(app, exitCode);
     facet::app::addAccuracyCommand(app, exitCode);
     facet::app::addSweepsCommand(app, exitCode);
+    facet::app::addInspectCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {

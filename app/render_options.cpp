@@ -42,12 +42,13 @@ std::vector<std::string> choices(const std::vector<std::string_view>& names) {
 
 }  // namespace
 
-void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interpHelp) {
+void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interpHelp,
+                      bool withOutput) {
     cmd.add_option("scene", o.scene,
                    "The .scene file, or a bare .off/.obj mesh (framed from a three-quarter view, "
                    "lit by a light near the camera)")
         ->required();
-    cmd.add_option("-o,--output", o.output, "Output PNG path")->required();
+    if (withOutput) cmd.add_option("-o,--output", o.output, "Output PNG path")->required();
     cmd.add_option("--mode", o.mode, "Draw mode")
         ->check(CLI::IsMember(choices(drawModeNames())))
         ->capture_default_str();

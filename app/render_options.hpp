@@ -42,7 +42,9 @@ struct RenderOptions {
 };
 
 /// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.
-void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& interpHelp);
+/// Without `withOutput`, no -o (a command that writes no image).
+void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& interpHelp,
+                      bool withOutput = true);
 
 /// Loads the scene or bare mesh (and --texture), applies --size, fills `settings` and writes
 /// --write-scene. On bad input prints one line prefixed with `command` on stderr and returns

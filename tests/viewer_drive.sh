@@ -18,7 +18,8 @@
 #   combo   open the Render panel's renderer combo and click its second entry (OpenGL twin)
 #   save    left drag across the image (orbit), then Ctrl+S (Save scene to the Scene panel's path)
 #   steps   run $FACET_DRIVE_STEPS, ';'-separated commands of this script: drag B X Y DX DY N,
-#           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, pause SECONDS
+#           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, shiftclick X Y
+#           (Shift + left click), pause SECONDS
 # FACET_DRIVE_SETTLE sets the wait before the scenario (1 s by default).
 # With FACET_DRIVE_QUIT=term the viewer is stopped with SIGTERM instead of Escape (so a last
 # --window-shot still shows what Escape would close, the help for one).
@@ -68,6 +69,15 @@ ctrldrag() {  # x0 y0 dx dy steps, left button with Ctrl held
 at() { xdotool mousemove --window "$wid" "$1" "$2"; sleep 0.1; }
 key() { xdotool key "$@"; sleep 0.4; }
 click() { xdotool click "$1"; sleep 0.3; }
+shiftclick() {  # x y: left click with Shift held (the pixel inspector)
+  at "$1" "$2"
+  xdotool keydown shift
+  sleep 0.2
+  xdotool click 1
+  sleep 0.2
+  xdotool keyup shift
+  sleep 0.5
+}
 pause() { sleep "$1"; }
 
 case "$scenario" in

@@ -33,12 +33,16 @@ void handleInput(App& app) {
     ImGuiIO& io = ImGui::GetIO();
     applyActions(app);
 
+    // Shift + click inspects a pixel (inspector.hpp) and starts no drag.
+    const bool inspected =
+        app.drag.button < 0 && app.work.lightDrag == LightDrag::None && inspectorClick(app);
     // The light's marker (or Ctrl + drag) takes a left press before the camera does.
-    if (app.drag.button < 0 && app.work.lightDrag == LightDrag::None && !io.WantCaptureMouse &&
-        ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    if (!inspected && app.drag.button < 0 && app.work.lightDrag == LightDrag::None &&
+        !io.WantCaptureMouse && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
         startLightDrag(app);
     dragLightStep(app);
-    if (app.drag.button < 0 && app.work.lightDrag == LightDrag::None && !io.WantCaptureMouse) {
+    if (!inspected && app.drag.button < 0 && app.work.lightDrag == LightDrag::None &&
+        !io.WantCaptureMouse) {
         for (int b = 0; b < 3; ++b) {
             if (!ImGui::IsMouseClicked(b)) continue;
             app.drag.button = b;

@@ -51,6 +51,7 @@ constexpr std::array kMouse{
     MouseBinding{"wheel", "zoom"},
     MouseBinding{"drag the light marker", "move the light around the look-at point"},
     MouseBinding{"Ctrl + left drag", "turn the light around the look-at point"},
+    MouseBinding{"Shift + left click", "inspect that pixel: its fragments, step by step"},
     MouseBinding{"drag the divider", "move the Compare divider"},
     MouseBinding{"drag the side bar's edge", "resize it; << collapses it"},
     MouseBinding{"Ctrl + click a slider", "type a value (beyond its range too)"},

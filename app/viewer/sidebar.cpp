@@ -242,6 +242,7 @@ void drawPanels(App& app) {
     }
     if (app.work.statsOverlay) statsOverlay(app);
     accuracyWindow(app);
+    inspectorWindow(app);
     noticeOverlay(app);
     if (app.work.help) helpOverlay(app);
 }

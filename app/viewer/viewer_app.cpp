@@ -341,7 +341,7 @@ int App::run() {
     if (!options.statePath.empty()) {
         const std::string text = stateText(model, frameCount) + rendererLogText(rendererLog) +
                                  accuracyStateText(accuracy.report().get()) +
-                                 workspaceStateText(*this);
+                                 workspaceStateText(*this) + inspectorStateText(*this);
         if (Status e = writeTextFile(options.statePath, text)) {
             std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
             status = 1;

@@ -13,6 +13,7 @@
 #include "file_list.hpp"
 #include "frame_stats.hpp"
 #include "gl_frame.hpp"
+#include "inspector.hpp"
 #include "layout.hpp"
 #include "load_job.hpp"
 #include "options.hpp"
@@ -91,6 +92,7 @@ struct App {
     bool screenshotRequested = false;  ///< from the key or the button; taken this frame
     bool vsyncApplied = true;          ///< the swap interval last set
     AccuracyJob accuracy;              ///< Compare: the methods against the ground truth
+    InspectorState inspector;          ///< the pixel inspector (Shift + click)
     LoadJob loading;                   ///< a scene or mesh being opened on a worker thread
     /// The large file named on the command line is on the loading thread (the default scene
     /// shows meanwhile); the command line's settings are applied again once it arrives.

@@ -74,6 +74,23 @@ std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings&
 /// from the scene (Gouraud colours lit per vertex, normals, uvs, the normals display).
 Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress = {});
 
+/// A rectangle of an image's pixels: columns [x, x + width), rows [y, y + height).
+struct Window {
+    int x = 0, y = 0, width = 0, height = 0;
+
+    /// Every field equal.
+    bool operator==(const Window&) const = default;
+};
+
+/// render() for only the pixels of `window` (the returned image is the window's size; pixel
+/// (0, 0) is the frame's (x, y)): the clip positions are moved by the window's corner, so a
+/// pixel inspector or a ground truth of one pixel costs the triangles' setup, not the frame's
+/// pixels. Rule 11's Subdivided spans start at the window's column 0, so for Subdivided N,
+/// window.x must be a multiple of N for the frame's values; the Depth shader's colours map the
+/// window's depth range, not the frame's.
+Image renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
+                   const Progress& progress = {});
+
 /// Draws clip-space geometry onto a background-filled image of the given size.
 Image draw(const Input& input, const RenderSettings& settings, int width, int height,
            const Progress& progress = {});

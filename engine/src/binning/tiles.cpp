@@ -38,18 +38,6 @@ bool contains(const PixelRect& outer, const PixelRect& inner) {
            inner.y1 <= outer.y1;
 }
 
-/// The setup restricted to `rect`; the edge values move to the new first pixel exactly, in
-/// integers, so coverage inside the rectangle is unchanged.
-CoverageSetup clipSetup(const CoverageSetup& s, const PixelRect& rect) {
-    CoverageSetup out = s;
-    out.box = {std::max(s.box.x0, rect.x0), std::max(s.box.y0, rect.y0),
-               std::min(s.box.x1, rect.x1), std::min(s.box.y1, rect.y1)};
-    if (out.box.empty()) return out;
-    const std::int64_t dx = out.box.x0 - s.box.x0, dy = out.box.y0 - s.box.y0;
-    for (int i = 0; i < 3; ++i) out.e0[i] = s.e0[i] + dx * s.stepX[i] + dy * s.stepY[i];
-    return out;
-}
-
 void addCounters(RenderStats& to, const RenderStats& from) {
     to.trianglesIn += from.trianglesIn;
     to.trianglesCulled += from.trianglesCulled;
@@ -109,7 +97,7 @@ std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int hei
             std::memcpy(&setup, record, kSetupBytes);
             // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
             if (!contains(rect, setup.box)) {
-                setup = clipSetup(setup, rect);
+                setup = restrictSetup(setup, rect);
                 if (setup.box.empty()) continue;
             }
             // Planes is trivially copyable; its head is a prefix of its layout.

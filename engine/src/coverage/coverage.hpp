@@ -39,6 +39,12 @@ struct CoverageSetup {
     std::int64_t area2;  ///< twice the signed area in 1/65536 px², after orientation fix (> 0)
 };
 
+/// The top-left rule: a top edge (horizontal, going right) or a left edge (going up), for the
+/// winding that puts the inside at E ≥ 0. Pixel centres exactly on such an edge are inside.
+inline bool isTopLeft(std::int64_t dx, std::int64_t dy) {
+    return dy < 0 || (dy == 0 && dx > 0);
+}
+
 /// Result of snapping: which way the triangle faces on screen.
 enum class Facing { Degenerate, Front, Back };
 
@@ -108,13 +114,24 @@ inline Facing setupCoverage(const std::int64_t (&xs)[3], const std::int64_t (&ys
         const int j = (i + 1) % 3;
         const std::int64_t dx = x[j] - x[i];
         const std::int64_t dy = y[j] - y[i];
-        // Top edge (horizontal, going right) or left edge (going up): centres on it are inside.
-        const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
-        out.e0[i] = dx * (py - y[i]) - dy * (px - x[i]) - (topLeft ? 0 : 1);
+        // Centres on a top-left edge are inside: the bias makes E = 0 fail on the others.
+        out.e0[i] = dx * (py - y[i]) - dy * (px - x[i]) - (isTopLeft(dx, dy) ? 0 : 1);
         out.stepX[i] = -dy * kSubPixel;
         out.stepY[i] = dx * kSubPixel;
     }
     return facing;
+}
+
+/// The setup restricted to `rect`; the edge values move to the new first pixel exactly, in
+/// integers, so coverage inside the rectangle is unchanged (tiles, the pixel inspector).
+inline CoverageSetup restrictSetup(const CoverageSetup& s, const PixelRect& rect) {
+    CoverageSetup out = s;
+    out.box = {std::max(s.box.x0, rect.x0), std::max(s.box.y0, rect.y0),
+               std::min(s.box.x1, rect.x1), std::min(s.box.y1, rect.y1)};
+    if (out.box.empty()) return out;
+    const std::int64_t dx = out.box.x0 - s.box.x0, dy = out.box.y0 - s.box.y0;
+    for (int i = 0; i < 3; ++i) out.e0[i] = s.e0[i] + dx * s.stepX[i] + dy * s.stepY[i];
+    return out;
 }
 
 /// Calls visit(x, y) for every covered pixel centre, row by row, left to right.

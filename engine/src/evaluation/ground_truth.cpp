@@ -36,24 +36,14 @@ RenderSettings groundTruthSettings(const RenderSettings& settings) {
     return s;
 }
 
-GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings, int samples,
-                              const GroundTruthProgress& progress) {
-    const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
-    Scene big = scene;  // the mesh and the texture are shared
-    big.camera = resizedCamera(scene.camera, scene.camera.width * n, scene.camera.height * n);
-    // The reference render is nearly all of the time; the average after it is the last 1 %.
-    reference::Progress renderProgress;
-    if (progress) renderProgress = [&progress](double f) { return progress(0.99 * f); };
-    const reference::Image image =
-        reference::render(big, groundTruthSettings(settings), renderProgress);
-    GroundTruth truth;
-    if (image.cancelled) {
-        truth.cancelled = true;
-        return truth;
-    }
+namespace {
 
-    truth.width = scene.camera.width;
-    truth.height = scene.camera.height;
+/// Each n×n block of `image` averaged into one pixel of a width × height truth: colours
+/// clamped per sub-sample, the share of sub-samples some triangle drew.
+GroundTruth averageBlocks(const reference::Image& image, int n, int width, int height) {
+    GroundTruth truth;
+    truth.width = width;
+    truth.height = height;
     truth.samples = n;
     const std::size_t pixels = static_cast<std::size_t>(truth.width) * truth.height;
     truth.color.assign(pixels, glm::vec3(0.0f));
@@ -78,8 +68,43 @@ GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings
             truth.coverage[p] = static_cast<float>(covered * perSample);
         }
     }
+    return truth;
+}
+
+/// The scene with its camera at n times the size: sub-sample centres at (k + ½)/n in each pixel.
+Scene bigScene(const Scene& scene, int n) {
+    Scene big = scene;  // the mesh and the texture are shared
+    big.camera = resizedCamera(scene.camera, scene.camera.width * n, scene.camera.height * n);
+    return big;
+}
+
+}  // namespace
+
+GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings, int samples,
+                              const GroundTruthProgress& progress) {
+    const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
+    // The reference render is nearly all of the time; the average after it is the last 1 %.
+    reference::Progress renderProgress;
+    if (progress) renderProgress = [&progress](double f) { return progress(0.99 * f); };
+    const reference::Image image =
+        reference::render(bigScene(scene, n), groundTruthSettings(settings), renderProgress);
+    if (image.cancelled) {
+        GroundTruth truth;
+        truth.cancelled = true;
+        return truth;
+    }
+    GroundTruth truth = averageBlocks(image, n, scene.camera.width, scene.camera.height);
     if (progress) progress(1.0);  // too late to cancel: the truth is whole
     return truth;
+}
+
+GroundTruth renderGroundTruthPixel(const Scene& scene, const RenderSettings& settings, int x, int y,
+                                   int samples) {
+    if (x < 0 || y < 0 || x >= scene.camera.width || y >= scene.camera.height) return {};
+    const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
+    const reference::Image image = reference::renderWindow(
+        bigScene(scene, n), groundTruthSettings(settings), {x * n, y * n, n, n});
+    return averageBlocks(image, n, 1, 1);
 }
 
 }  // namespace facet

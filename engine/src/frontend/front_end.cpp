@@ -60,7 +60,7 @@ struct GuardBand {
 bool project(const glm::vec4 (&pos)[3], const GuardBand& guard, glm::dvec2 (&s)[3]) {
     bool inGuard = true;
     for (int j = 0; j < 3; ++j) {
-        s[j] = glm::dvec2(pos[j].x, pos[j].y) / static_cast<double>(pos[j].w);
+        s[j] = screenPosition(pos[j]);
         inGuard = inGuard && guard.contains(s[j]);
     }
     return inGuard;

@@ -15,6 +15,11 @@
 
 namespace facet::detail {
 
+/// A clip position on screen, in double: the projection every later stage starts from.
+inline glm::dvec2 screenPosition(const glm::vec4& clip) {
+    return glm::dvec2(clip.x, clip.y) / static_cast<double>(clip.w);
+}
+
 /// The per-triangle rasterizer of a variant: covers `setup` and shades with `planes`; returns
 /// the number of pixels covered (fragments before the depth test).
 using RasterizeFn = std::size_t (*)(void* context, const CoverageSetup& setup,

@@ -42,13 +42,10 @@ void resolveDepthColors(Framebuffer& fb, RenderStats& stats, int threads) {
     if (lo > hi) return;
     stats.depthNear = lo;
     stats.depthFar = hi;
-    const double range = hi > lo ? static_cast<double>(hi) - lo : 1.0;
     const auto n = static_cast<std::ptrdiff_t>(fb.depth.size());
 #pragma omp parallel for num_threads(threads) if (n > kParallelPixels)
     for (std::ptrdiff_t i = 0; i < n; ++i)
-        if (fb.depth[i] != kEmptyDepth)
-            fb.color[i] =
-                packColor(glm::vec3(viridis((fb.depth[i] - static_cast<double>(lo)) / range)));
+        if (fb.depth[i] != kEmptyDepth) fb.color[i] = depthColor(fb.depth[i], lo, hi);
 }
 
 }  // namespace facet::detail

@@ -9,24 +9,21 @@ void resolveSupersampled(const Framebuffer& big, int n, Framebuffer& out, int th
     const int w = big.width / n, h = big.height / n;
     out.resize(w, h);
     const std::uint32_t count = static_cast<std::uint32_t>(n * n);
-    const std::uint32_t half = count / 2;  // round to nearest
 #pragma omp parallel for num_threads(threads) if (static_cast <long>(w) * h > 65536)
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            std::uint32_t sum[4] = {0, 0, 0, 0};
+            RgbaSum sum;
             float nearest = kEmptyDepth;
             for (int sy = 0; sy < n; ++sy) {
                 const std::size_t row = big.index(x * n, y * n + sy);
                 for (int sx = 0; sx < n; ++sx) {
                     const std::uint32_t c = big.color[row + static_cast<std::size_t>(sx)];
-                    for (int k = 0; k < 4; ++k) sum[k] += (c >> (8 * k)) & 0xFFu;
+                    sum.add(c);
                     nearest = std::min(nearest, big.depth[row + static_cast<std::size_t>(sx)]);
                 }
             }
-            std::uint32_t packed = 0;
-            for (int k = 0; k < 4; ++k) packed |= ((sum[k] + half) / count) << (8 * k);
             const std::size_t i = out.index(x, y);
-            out.color[i] = packed;
+            out.color[i] = sum.mean(count);
             out.depth[i] = nearest;
         }
     }

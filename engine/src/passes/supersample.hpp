@@ -7,12 +7,30 @@
 // The principal point is half the image (conventions §4), so big pixel (I + ½, J + ½) lands at
 // ((I + ½)/n, (J + ½)/n) in the frame's pixels: an even n×n grid of sample centres in each pixel.
 
+#include <cstdint>
+
 #include "facet/framebuffer.hpp"
 
 namespace facet::detail {
 
 /// Largest accepted samples per axis (16 per pixel).
 inline constexpr int kMaxSupersample = 4;
+
+/// The sum of packed RGBA pixels, channel by channel, and their rounded mean.
+struct RgbaSum {
+    std::uint32_t sum[4] = {0, 0, 0, 0};
+
+    /// Adds one packed pixel.
+    void add(std::uint32_t c) {
+        for (int k = 0; k < 4; ++k) sum[k] += (c >> (8 * k)) & 0xFFu;
+    }
+    /// The mean of `count` pixels, each channel rounded to nearest, packed.
+    std::uint32_t mean(std::uint32_t count) const {
+        std::uint32_t packed = 0;
+        for (int k = 0; k < 4; ++k) packed |= ((sum[k] + count / 2) / count) << (8 * k);
+        return packed;
+    }
+};
 
 /// Averages each n×n block of `big` into one pixel of `out` (resized to big / n): each channel
 /// the rounded mean (alpha too), depth the nearest of the block (empty only if all are).

@@ -238,24 +238,9 @@ RenderStats Renderer::Impl::renderView(Renderer& renderer, const Scene& scene, c
 
     // Vertex stage: only the streams the settings need.
     const Mesh& mesh = *scene.mesh;
-    DrawInput input{.clip = vertices.transform(mesh, clipFromWorld(cam), threads),
-                    .colors = mesh.colors,
-                    .indices = mesh.indices,
-                    .nearPlane = static_cast<float>(resolveNearPlane(settings, mesh)),
-                    .texture = scene.texture.get(),
-                    .lighting = prepareLighting(scene.lighting),
-                    .eye = glm::vec3(cam.eye)};
-    // Lighting only changes colour: a depth image or a bare texel needs no normals.
-    const bool lit = settings.lighting != Lighting::Off && usesColor(settings);
     std::span<const glm::vec3> vertexNormals;
-    if (lit || settings.showNormals) vertexNormals = vertices.normals(mesh);
-    if (lit && settings.lighting == Lighting::Gouraud)
-        input.colors = vertices.gouraud(mesh, input.eye, input.lighting, threads);
-    if (lit && settings.lighting == Lighting::Phong) {
-        input.normals = vertexNormals;
-        input.positions = mesh.positions;
-    }
-    if (settings.shader == ShaderKind::Texture) input.uvs = mesh.uvs;
+    const DrawInput input =
+        prepareDrawInput(vertices, scene, cam, settings, threads, vertexNormals);
     const double vertexMs = msSince(t);
 
     if (inputOut) *inputOut = input;

@@ -4,7 +4,9 @@
 
 #include <cstddef>
 
+#include "facet/camera.hpp"
 #include "facet/normals.hpp"
+#include "pipeline/variants.hpp"
 #include "scene/fingerprint.hpp"
 #include "shading/fast_lighting.hpp"
 
@@ -51,6 +53,31 @@ std::span<const glm::vec3> VertexStage::gouraud(const Mesh& mesh, const glm::vec
         litColors_[i] = shade(rgb, lightIntensity(positions[i], normals_[i], eye, lighting));
     }
     return litColors_;
+}
+
+DrawInput prepareDrawInput(VertexStage& stage, const Scene& scene, const Camera& camera,
+                           const RenderSettings& settings, int threads,
+                           std::span<const glm::vec3>& vertexNormals) {
+    const Mesh& mesh = *scene.mesh;
+    DrawInput input{.clip = stage.transform(mesh, clipFromWorld(camera), threads),
+                    .colors = mesh.colors,
+                    .indices = mesh.indices,
+                    .nearPlane = static_cast<float>(resolveNearPlane(settings, mesh)),
+                    .texture = scene.texture.get(),
+                    .lighting = prepareLighting(scene.lighting),
+                    .eye = glm::vec3(camera.eye)};
+    // Lighting only changes colour: a depth image or a bare texel needs no normals.
+    const bool lit = settings.lighting != Lighting::Off && usesColor(settings);
+    vertexNormals = {};
+    if (lit || settings.showNormals) vertexNormals = stage.normals(mesh);
+    if (lit && settings.lighting == Lighting::Gouraud)
+        input.colors = stage.gouraud(mesh, input.eye, input.lighting, threads);
+    if (lit && settings.lighting == Lighting::Phong) {
+        input.normals = vertexNormals;
+        input.positions = mesh.positions;
+    }
+    if (settings.shader == ShaderKind::Texture) input.uvs = mesh.uvs;
+    return input;
 }
 
 }  // namespace facet::detail

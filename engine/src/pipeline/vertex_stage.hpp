@@ -13,6 +13,9 @@
 
 #include "facet/lighting.hpp"
 #include "facet/mesh.hpp"
+#include "facet/render.hpp"
+#include "facet/scene.hpp"
+#include "facet/settings.hpp"
 
 namespace facet::detail {
 
@@ -48,5 +51,13 @@ class VertexStage {
     std::uint64_t normalsFingerprint_ = 0;  // of the mesh normals_ belong to
     std::vector<glm::dvec4> normalSums_;
 };
+
+/// The draw input of a frame of `scene` seen by `camera`: the vertex stage run for only the
+/// streams the settings need (clip positions; Gouraud colours, Phong normals and positions,
+/// uvs). `vertexNormals` receives the normals when lighting or the normals display needs them.
+/// The spans point into `stage` and the mesh.
+DrawInput prepareDrawInput(VertexStage& stage, const Scene& scene, const Camera& camera,
+                           const RenderSettings& settings, int threads,
+                           std::span<const glm::vec3>& vertexNormals);
 
 }  // namespace facet::detail

@@ -42,10 +42,30 @@ std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings&
     return ends;
 }
 
+namespace {
+
+/// Clip positions moved so that pixel (x, y) lands on (0, 0): pixel = clip.xy / w, so subtract
+/// (x, y)·w.
+void moveToWindow(std::vector<glm::dvec4>& clip, const Window& window) {
+    if (window.x == 0 && window.y == 0) return;  // the whole frame: the positions as they are
+    for (glm::dvec4& p : clip) {
+        p.x -= window.x * p.w;
+        p.y -= window.y * p.w;
+    }
+}
+
+}  // namespace
+
 Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
+    return renderWindow(scene, settings, {0, 0, scene.camera.width, scene.camera.height}, progress);
+}
+
+Image renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
+                   const Progress& progress) {
     const Mesh& mesh = *scene.mesh;
     const std::size_t n = mesh.positions.size();
-    const std::vector<glm::dvec4> clip = projectScene(scene);
+    std::vector<glm::dvec4> clip = projectScene(scene);
+    moveToWindow(clip, window);
     std::vector<glm::dvec3> positions(mesh.positions.begin(), mesh.positions.end());
     std::vector<glm::dvec3> colors(mesh.colors.begin(), mesh.colors.end());
     colors.resize(n, glm::dvec3(1.0));  // rule 3: white when there are none
@@ -66,6 +86,7 @@ Image render(const Scene& scene, const RenderSettings& settings, const Progress&
     }
     std::vector<glm::dvec4> segments;
     if (settings.showNormals) segments = projectNormals(scene, settings);
+    moveToWindow(segments, window);
 
     Input input;
     input.clip = clip;
@@ -79,7 +100,7 @@ Image render(const Scene& scene, const RenderSettings& settings, const Progress&
     input.texture = scene.texture.get();
     input.lighting = scene.lighting;
     input.eye = scene.camera.eye;
-    return draw(input, settings, scene.camera.width, scene.camera.height, progress);
+    return draw(input, settings, window.width, window.height, progress);
 }
 
 }  // namespace facet::reference

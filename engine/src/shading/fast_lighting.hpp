@@ -29,20 +29,38 @@ struct LibmPow {
 };
 }  // namespace detail
 
+/// The formula's terms at one point: what lightIntensity() sums, for the pixel inspector.
+struct LightTerms {
+    glm::vec3 l{0.0f}, v{0.0f}, h{0.0f};  ///< to the light, to the eye, halfway (unit or zero)
+    float nl = 0.0f, nh = 0.0f;           ///< n·l, and n·h clamped to [0, 1]
+    float diffuse = 0.0f, specular = 0.0f;  ///< Id·Kd·n·l and Id·Ks·(n·h)^s, before the n·l test
+    float intensity = 0.0f;                 ///< I
+};
+
+/// The terms of I at point `p` with normal `n` (unit, or zero for none), seen from `eye`.
+template <class Pow = detail::LibmPow>
+inline LightTerms lightTerms(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
+                             const FastLighting& lighting, Pow pow = {}) {
+    LightTerms t;
+    // With w ≥ 0, xyz − w·p is w·(light point − p) for a point light and xyz for a directional
+    // one: one expression, no division, no branch on the light's kind.
+    t.l = detail::normalizeOrZero(glm::vec3(lighting.light) - lighting.light.w * p);
+    t.v = detail::normalizeOrZero(eye - p);
+    t.h = detail::normalizeOrZero(t.l + t.v);
+    t.nl = glm::dot(n, t.l);
+    t.nh = std::clamp(glm::dot(n, t.h), 0.0f, 1.0f);
+    t.diffuse = lighting.diffuse * t.nl;
+    t.specular = lighting.specular * pow(t.nh, lighting.shininess);
+    t.intensity = lighting.ambientTerm + (t.nl > 0.0f ? t.diffuse + t.specular : 0.0f);
+    return t;
+}
+
 /// I at point `p` with normal `n` (unit, or zero for none), seen from `eye`. Fast version: same
 /// rules as the double one, agreeing to float rounding; `pow` raises n·h to the shininess.
 template <class Pow = detail::LibmPow>
 inline float lightIntensity(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
                             const FastLighting& lighting, Pow pow = {}) {
-    // With w ≥ 0, xyz − w·p is w·(light point − p) for a point light and xyz for a directional
-    // one: one expression, no division, no branch on the light's kind.
-    const glm::vec3 l = detail::normalizeOrZero(glm::vec3(lighting.light) - lighting.light.w * p);
-    const glm::vec3 v = detail::normalizeOrZero(eye - p);
-    const glm::vec3 h = detail::normalizeOrZero(l + v);
-    const float nl = glm::dot(n, l);
-    const float nh = std::clamp(glm::dot(n, h), 0.0f, 1.0f);
-    const float lit = lighting.diffuse * nl + lighting.specular * pow(nh, lighting.shininess);
-    return lighting.ambientTerm + (nl > 0.0f ? lit : 0.0f);
+    return lightTerms(p, n, eye, lighting, pow).intensity;
 }
 
 /// The lit colour clamp(rgb · I, 0, 1).

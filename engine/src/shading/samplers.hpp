@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <glm/ext/vector_int2.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -45,8 +46,15 @@ inline glm::vec3 texel255(const std::uint32_t* row, int x) {
             static_cast<float>((p >> 16) & 0xFFu)};
 }
 
-/// Bilinear filtering of one level at already wrapped coordinates, in 0..255.
-inline glm::vec3 bilinear255(const MipLevel& level, float wu, float wv) {
+/// The four texels bilinear filtering reads at wrapped coordinates (wu, wv) and the blend
+/// fractions: (x0, y0) weighs (1 − fx)(1 − fy), (x1, y0) fx(1 − fy) and so on.
+struct BilinearTaps {
+    int x0, y0, x1, y1;
+    float fx, fy;
+};
+
+/// The taps of one level at already wrapped coordinates.
+inline BilinearTaps bilinearTaps(const MipLevel& level, float wu, float wv) {
     const int w = level.width;
     const int h = level.height;
     // Texel centres sit at half-integers; x, y are in [−½, size − ½] since wu, wv are in [0, 1].
@@ -56,40 +64,61 @@ inline glm::vec3 bilinear255(const MipLevel& level, float wu, float wv) {
     int y0 = static_cast<int>(y);
     if (x < static_cast<float>(x0)) --x0;
     if (y < static_cast<float>(y0)) --y0;
-    const float fx = x - static_cast<float>(x0);
-    const float fy = y - static_cast<float>(y0);
-    int x1 = x0 + 1;
-    int y1 = y0 + 1;
-    if (x0 < 0) x0 += w;
-    if (y0 < 0) y0 += h;
-    if (x1 >= w) x1 -= w;
-    if (y1 >= h) y1 -= h;
-    const std::uint32_t* r0 =
-        level.texels.data() + static_cast<std::size_t>(y0) * static_cast<std::size_t>(w);
-    const std::uint32_t* r1 =
-        level.texels.data() + static_cast<std::size_t>(y1) * static_cast<std::size_t>(w);
+    BilinearTaps t{x0, y0, x0 + 1, y0 + 1, x - static_cast<float>(x0), y - static_cast<float>(y0)};
+    if (t.x0 < 0) t.x0 += w;
+    if (t.y0 < 0) t.y0 += h;
+    if (t.x1 >= w) t.x1 -= w;
+    if (t.y1 >= h) t.y1 -= h;
+    return t;
+}
+
+/// Bilinear filtering of one level at already wrapped coordinates, in 0..255.
+inline glm::vec3 bilinear255(const MipLevel& level, float wu, float wv) {
+    const BilinearTaps t = bilinearTaps(level, wu, wv);
+    const auto w = static_cast<std::size_t>(level.width);
+    const std::uint32_t* r0 = level.texels.data() + static_cast<std::size_t>(t.y0) * w;
+    const std::uint32_t* r1 = level.texels.data() + static_cast<std::size_t>(t.y1) * w;
     // a + (b − a)·f: exact at f = 0 and f = 1, and never above max(a, b).
-    const glm::vec3 c00 = texel255(r0, x0);
-    const glm::vec3 c10 = texel255(r0, x1);
-    const glm::vec3 c01 = texel255(r1, x0);
-    const glm::vec3 c11 = texel255(r1, x1);
-    const glm::vec3 top = c00 + (c10 - c00) * fx;
-    const glm::vec3 bottom = c01 + (c11 - c01) * fx;
-    return top + (bottom - top) * fy;
+    const glm::vec3 c00 = texel255(r0, t.x0);
+    const glm::vec3 c10 = texel255(r0, t.x1);
+    const glm::vec3 c01 = texel255(r1, t.x0);
+    const glm::vec3 c11 = texel255(r1, t.x1);
+    const glm::vec3 top = c00 + (c10 - c00) * t.fx;
+    const glm::vec3 bottom = c01 + (c11 - c01) * t.fx;
+    return top + (bottom - top) * t.fy;
+}
+
+/// Trilinear filtering's two levels: ⌊λ⌋ and ⌊λ⌋ + 1 mixed by `fraction` (λ clamped to the
+/// chain, NaN as 0); a fraction of 0 reads level `first` only.
+struct TrilinearLevels {
+    int first;
+    float fraction;
+};
+
+/// The levels trilinear filtering reads at level of detail `lod`.
+inline TrilinearLevels trilinearLevels(const Texture& tex, float lod) {
+    const float last = static_cast<float>(tex.levelCount() - 1);
+    const float l = lod > 0.0f ? std::min(lod, last) : 0.0f;  // NaN → 0
+    const int l0 = static_cast<int>(l);
+    return {l0, l - static_cast<float>(l0)};
 }
 
 }  // namespace detail
 
-/// Nearest filtering on level 0: texel (⌊u'·W⌋, ⌊v'·H⌋) clamped to the image.
-inline glm::vec3 sampleNearest(const Texture& tex, glm::vec2 uv) {
+/// Nearest filtering's texel on level 0: (⌊u'·W⌋, ⌊v'·H⌋) clamped to the image.
+inline glm::ivec2 nearestTexel(const Texture& tex, glm::vec2 uv) {
     const MipLevel& l0 = tex.level(0);
     // wrapCoord is in [0, 1], so the products are in [0, size]: the casts are defined and
     // truncation is floor; only 1.0 needs the clamp.
-    const int x =
-        std::min(static_cast<int>(wrapCoord(uv.x) * static_cast<float>(l0.width)), l0.width - 1);
-    const int y =
-        std::min(static_cast<int>(wrapCoord(uv.y) * static_cast<float>(l0.height)), l0.height - 1);
-    return texelColor(l0, x, y);
+    return {
+        std::min(static_cast<int>(wrapCoord(uv.x) * static_cast<float>(l0.width)), l0.width - 1),
+        std::min(static_cast<int>(wrapCoord(uv.y) * static_cast<float>(l0.height)), l0.height - 1)};
+}
+
+/// Nearest filtering: the colour of nearestTexel().
+inline glm::vec3 sampleNearest(const Texture& tex, glm::vec2 uv) {
+    const glm::ivec2 t = nearestTexel(tex, uv);
+    return texelColor(tex.level(0), t.x, t.y);
 }
 
 /// Bilinear filtering on one level (clamped to the chain), texel centres at ((i+½)/W, (j+½)/H),
@@ -120,13 +149,11 @@ inline float mipLevel(const Texture& tex, glm::vec2 duvDx, glm::vec2 duvDy) {
 inline glm::vec3 sampleTrilinear(const Texture& tex, glm::vec2 uv, float lod) {
     const float wu = wrapCoord(uv.x);
     const float wv = wrapCoord(uv.y);
-    const float last = static_cast<float>(tex.levelCount() - 1);
-    const float l = lod > 0.0f ? std::min(lod, last) : 0.0f;  // NaN → 0
-    const int l0 = static_cast<int>(l);
-    const float f = l - static_cast<float>(l0);
-    const glm::vec3 c0 = detail::bilinear255(tex.level(l0), wu, wv);
+    const detail::TrilinearLevels levels = detail::trilinearLevels(tex, lod);
+    const float f = levels.fraction;
+    const glm::vec3 c0 = detail::bilinear255(tex.level(levels.first), wu, wv);
     if (f == 0.0f) return c0 * (1.0f / 255.0f);
-    const glm::vec3 c1 = detail::bilinear255(tex.level(l0 + 1), wu, wv);
+    const glm::vec3 c1 = detail::bilinear255(tex.level(levels.first + 1), wu, wv);
     return (c0 + (c1 - c0) * f) * (1.0f / 255.0f);
 }
 

@@ -47,6 +47,59 @@ inline float uvLevelOfDetail(const Planes& p, float dx, float dy, float depth, i
     return mipLevel(texture, d1 * w1x + d2 * w2x, d1 * w1y + d2 * w2y);
 }
 
+/// Interp::Subdivided: the exact weights at the two ends of the current N-pixel span, kept
+/// while a row is walked left to right through it. A fresh one gives the same weights.
+struct SubdividedSpan {
+    int y = INT_MIN, x0 = INT_MIN;
+    bool exact = false;  ///< the span's ends are unusable: exact at each pixel instead
+    float s1a = 0.0f, s2a = 0.0f, s1b = 0.0f, s2b = 0.0f;
+};
+
+/// The interpolation weights (m1, m2) of vertices 1 and 2 at pixel (x, y), (dx, dy) from the
+/// base pixel, in variant V's interpolation mode; `n` is the subdivision, `invN` its inverse.
+template <class V>
+inline void fragmentWeights(const Planes& p, int x, int y, float dx, float dy, float depth, int n,
+                            float invN, SubdividedSpan& span, float& m1, float& m2) {
+    if constexpr (V::kInterp == Interp::Affine) {
+        m1 = Planes::eval(p.l1, dx, dy);
+        m2 = Planes::eval(p.l2, dx, dy);
+    } else if constexpr (V::kInterp == Interp::Perspective) {
+        m1 = Planes::eval(p.u1, dx, dy) * depth;
+        m2 = Planes::eval(p.u2, dx, dy) * depth;
+    } else {
+        const int x0 = x / n * n;  // x >= 0: division is floor
+        if (y != span.y || x0 != span.x0) {
+            span.y = y;
+            span.x0 = x0;
+            const auto ex = static_cast<float>(x0 - p.baseX);
+            span.exact = !perspectiveWeights(p, ex, dy, span.s1a, span.s2a) ||
+                         !perspectiveWeights(p, ex + static_cast<float>(n), dy, span.s1b, span.s2b);
+        }
+        if (span.exact) {
+            m1 = Planes::eval(p.u1, dx, dy) * depth;
+            m2 = Planes::eval(p.u2, dx, dy) * depth;
+        } else {
+            const float t = static_cast<float>(x - x0) * invN;
+            m1 = span.s1a + (span.s1b - span.s1a) * t;
+            m2 = span.s2a + (span.s2b - span.s2a) * t;
+        }
+    }
+}
+
+/// Every varying of V at weights (m1, m2), into a[0 … V::kCount).
+template <class V>
+inline void interpolateVaryings(const Planes& p, float m1, float m2, float* a) {
+    for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
+}
+
+/// The trilinear level of detail of variant V at (dx, dy); 0 for variants without derivatives.
+template <class V>
+inline float fragmentLod(const Planes& p, const Texture& texture, float dx, float dy, float depth) {
+    if constexpr (V::kDerivatives)
+        return uvLevelOfDetail<V::kInterp>(p, dx, dy, depth, V::kLayout.uvAt(), texture);
+    return 0.0f;
+}
+
 /// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
 template <class V>
 [[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
@@ -54,12 +107,7 @@ template <class V>
     const RasterContext& ctx = *static_cast<const RasterContext*>(context);
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
-    constexpr VaryingLayout L = V::kLayout;
-    // Subdivided: the exact weights at the two ends of the current N-pixel span, kept while the
-    // loop stays in it (rows are walked left to right).
-    int spanY = INT_MIN, spanX0 = INT_MIN;
-    bool spanExact = false;
-    float s1a = 0.0f, s2a = 0.0f, s1b = 0.0f, s2b = 0.0f;
+    SubdividedSpan span;
     const int n = ctx.subdivision;
     const float invN = 1.0f / static_cast<float>(n);
     std::size_t fragments = 0;
@@ -71,38 +119,11 @@ template <class V>
         const float depth = p.depthAt(dx, dy);
         const std::size_t i = fb.index(x, y);
         if (!passesDepth<V::kShader>(fb, i, depth)) return;
-
         float m1 = 0.0f, m2 = 0.0f;
-        if constexpr (V::kInterp == Interp::Affine) {
-            m1 = Planes::eval(p.l1, dx, dy);
-            m2 = Planes::eval(p.l2, dx, dy);
-        } else if constexpr (V::kInterp == Interp::Perspective) {
-            m1 = Planes::eval(p.u1, dx, dy) * depth;
-            m2 = Planes::eval(p.u2, dx, dy) * depth;
-        } else {
-            const int x0 = x / n * n;  // x >= 0: division is floor
-            if (y != spanY || x0 != spanX0) {
-                spanY = y;
-                spanX0 = x0;
-                const auto ex = static_cast<float>(x0 - p.baseX);
-                spanExact = !perspectiveWeights(p, ex, dy, s1a, s2a) ||
-                            !perspectiveWeights(p, ex + static_cast<float>(n), dy, s1b, s2b);
-            }
-            if (spanExact) {  // the span's ends are unusable: exact at this pixel instead
-                m1 = Planes::eval(p.u1, dx, dy) * depth;
-                m2 = Planes::eval(p.u2, dx, dy) * depth;
-            } else {
-                const float t = static_cast<float>(x - x0) * invN;
-                m1 = s1a + (s1b - s1a) * t;
-                m2 = s2a + (s2b - s2a) * t;
-            }
-        }
+        fragmentWeights<V>(p, x, y, dx, dy, depth, n, invN, span, m1, m2);
         float a[V::kCount > 0 ? V::kCount : 1];
-        for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
-
-        float lod = 0.0f;
-        if constexpr (V::kDerivatives)
-            lod = uvLevelOfDetail<V::kInterp>(p, dx, dy, depth, L.uvAt(), *k.texture);
+        interpolateVaryings<V>(p, m1, m2, a);
+        const float lod = fragmentLod<V>(p, *k.texture, dx, dy, depth);
         storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
     });
     return fragments;

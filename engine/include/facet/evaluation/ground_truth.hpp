@@ -47,4 +47,11 @@ GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings
                               int samples = kDefaultGroundTruthSamples,
                               const GroundTruthProgress& progress = {});
 
+/// The ground truth of pixel (x, y) alone, a 1×1 GroundTruth: the reference renders only that
+/// pixel's samples×samples sub-samples (reference::renderWindow), so it costs the triangles'
+/// setup, not a whole frame. Equal to renderGroundTruth()'s pixel (x, y), except with the Depth
+/// shader, whose colours then map the pixel's own depth range. Empty (width 0) outside the image.
+GroundTruth renderGroundTruthPixel(const Scene& scene, const RenderSettings& settings, int x, int y,
+                                   int samples = kDefaultGroundTruthSamples);
+
 }  // namespace facet
