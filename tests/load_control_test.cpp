@@ -90,10 +90,10 @@ TEST_F(LoadControlTest, ProgressRisesToOneThroughEveryPhaseOfAnObj) {
     // Each phase (read, check, parse, build) reports inside its share, not in one jump.
     const std::pair<float, float> inside[] = {
         {0.005f, 0.015f}, {0.1f, 0.15f}, {0.5f, 0.55f}, {0.9f, 0.95f}};
-    for (const auto& [lo, hi] : inside) {
+    for (const std::pair<float, float>& range : inside) {
         EXPECT_TRUE(std::any_of(r.reports.begin(), r.reports.end(),
-                                [lo, hi](float f) { return f > lo && f < hi; }))
-            << "no report between " << lo << " and " << hi;
+                                [&range](float f) { return f > range.first && f < range.second; }))
+            << "no report between " << range.first << " and " << range.second;
     }
 }
 
