@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "binning/tiles.hpp"
 #include "facet/colormap.hpp"

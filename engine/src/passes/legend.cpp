@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <span>
 
 #include "facet/colormap.hpp"
 
@@ -78,6 +79,47 @@ bool tooSmall(const Framebuffer& frame) {
     return frame.width < 64 || frame.height < 32;
 }
 
+/// A tick's text without owning it: the depth legend draws from stack buffers, so a frame
+/// allocates nothing.
+struct TickText {
+    double t;
+    std::string_view text;
+};
+
+void drawBar(Framebuffer& frame, std::string_view title, int bands, std::span<const TickText> ticks,
+             int scale) {
+    if (tooSmall(frame)) return;
+    scale = std::max(1, scale);
+    const int margin = 4 * scale, barH = 6 * scale, textH = kGlyphH * scale;
+    const int titleW = textWidth(title, scale);
+    const int barW = std::min(frame.width - 2 * margin, std::max(128 * scale, titleW));
+    const int titleH = title.empty() ? 0 : textH + margin;
+
+    // A dark box behind bar and labels keeps them readable on any background.
+    const int boxH = titleH + barH + textH + 3 * margin;
+    const int x0 = margin, y0 = frame.height - margin - boxH;
+    fillRect(frame, x0, y0, barW + 2 * margin, boxH, kBlack);
+    const int barX = x0 + margin;
+    if (!title.empty()) drawText(frame, barX, y0 + margin, title, scale, kWhite);
+    const int barY = y0 + margin + titleH;
+    for (int i = 0; i < barW; ++i) {
+        double t = barW > 1 ? static_cast<double>(i) / (barW - 1) : 0.0;
+        if (bands > 1) {
+            const int k = std::min(bands - 1, i * bands / barW);
+            t = static_cast<double>(k) / (bands - 1);
+        }
+        fillRect(frame, barX + i, barY, 1, barH, packUnit(viridis(t)));
+    }
+    const int textY = barY + barH + margin;
+    for (const TickText& tick : ticks) {
+        const int w = textWidth(tick.text, scale);
+        const int centre = barX + static_cast<int>(std::lround(std::clamp(tick.t, 0.0, 1.0) *
+                                                               static_cast<double>(barW - 1)));
+        const int x = std::max(barX, std::min(centre - w / 2, barX + barW - w));
+        drawText(frame, x, textY, tick.text, scale, kWhite);
+    }
+}
+
 }  // namespace
 
 int legendScale(int height) {
@@ -85,36 +127,9 @@ int legendScale(int height) {
 }
 
 void drawLegend(Framebuffer& frame, const LegendBar& bar, int scale) {
-    if (tooSmall(frame)) return;
-    scale = std::max(1, scale);
-    const int margin = 4 * scale, barH = 6 * scale, textH = kGlyphH * scale;
-    const int titleW = textWidth(bar.title, scale);
-    const int barW = std::min(frame.width - 2 * margin, std::max(128 * scale, titleW));
-    const int titleH = bar.title.empty() ? 0 : textH + margin;
-
-    // A dark box behind bar and labels keeps them readable on any background.
-    const int boxH = titleH + barH + textH + 3 * margin;
-    const int x0 = margin, y0 = frame.height - margin - boxH;
-    fillRect(frame, x0, y0, barW + 2 * margin, boxH, kBlack);
-    const int barX = x0 + margin;
-    if (!bar.title.empty()) drawText(frame, barX, y0 + margin, bar.title, scale, kWhite);
-    const int barY = y0 + margin + titleH;
-    for (int i = 0; i < barW; ++i) {
-        double t = barW > 1 ? static_cast<double>(i) / (barW - 1) : 0.0;
-        if (bar.bands > 1) {
-            const int k = std::min(bar.bands - 1, i * bar.bands / barW);
-            t = static_cast<double>(k) / (bar.bands - 1);
-        }
-        fillRect(frame, barX + i, barY, 1, barH, packUnit(viridis(t)));
-    }
-    const int textY = barY + barH + margin;
-    for (const LegendTick& tick : bar.ticks) {
-        const int w = textWidth(tick.text, scale);
-        const int centre = barX + static_cast<int>(std::lround(std::clamp(tick.t, 0.0, 1.0) *
-                                                               static_cast<double>(barW - 1)));
-        const int x = std::max(barX, std::min(centre - w / 2, barX + barW - w));
-        drawText(frame, x, textY, tick.text, scale, kWhite);
-    }
+    std::vector<TickText> ticks;
+    for (const LegendTick& tick : bar.ticks) ticks.push_back({tick.t, tick.text});
+    drawBar(frame, bar.title, bar.bands, ticks, scale);
 }
 
 void drawLegend(Framebuffer& frame, std::string_view title,
@@ -149,8 +164,8 @@ void drawDepthLegend(Framebuffer& frame, float depthNear, float depthFar) {
     char nearText[32], farText[32];
     std::snprintf(nearText, sizeof nearText, "%.4g", static_cast<double>(depthNear));
     std::snprintf(farText, sizeof farText, "%.4g", static_cast<double>(depthFar));
-    drawLegend(frame, LegendBar{"", 0, {{0.0, nearText}, {1.0, farText}}},
-               frame.height >= 400 ? 2 : 1);
+    const TickText ticks[] = {{0.0, nearText}, {1.0, farText}};
+    drawBar(frame, "", 0, ticks, frame.height >= 400 ? 2 : 1);
 }
 
 }  // namespace facet
