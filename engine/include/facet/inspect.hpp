@@ -85,7 +85,7 @@ struct InspectedFragment {
     int sample = 0;            ///< supersampling: sample sy·N + sx of the pixel; else 0
     int piece = 0;             ///< the fan or guard-band piece, 0 for an unclipped triangle
     bool clipped = false;      ///< the near plane or the guard band cut it (edges from pieces)
-    bool backFacing = false;   ///< clockwise on screen (y up)
+    bool backFacing = false;   ///< clockwise on screen (y up); false for a clipped piece
     InspectedVertex vertices[3];
     InspectedEdge edges[3];
     CoverageResult coverage = CoverageResult::Excluded;
