@@ -219,6 +219,8 @@ void summary(App& app, const InspectorState& s) {
         accuracyView(app.model.scene, app.model.sceneVersion, app.model.settings);
     if (!(now == s.view))
         ImGui::TextColored(kWarn, "stale: the view or settings changed since (Re-inspect)");
+    if (app.model.rendererChoice != RendererChoice::Cpu || app.compare.enabled)
+        ImGui::TextDisabled("(the CPU engine's frame of these settings is inspected)");
 
     std::string label = "final " + hex(h.finalColor) + "   depth " + depthText(h.finalDepth);
     swatch("##final", rgbaColor(h.finalColor), label.c_str());

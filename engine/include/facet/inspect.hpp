@@ -85,7 +85,7 @@ struct InspectedFragment {
     int sample = 0;            ///< supersampling: sample sy·N + sx of the pixel; else 0
     int piece = 0;             ///< the fan or guard-band piece, 0 for an unclipped triangle
     bool clipped = false;      ///< the near plane or the guard band cut it (edges from pieces)
-    bool backFacing = false;   ///< clockwise on screen (y up)
+    bool backFacing = false;   ///< clockwise on screen (y up); false for a clipped piece
     InspectedVertex vertices[3];
     InspectedEdge edges[3];
     CoverageResult coverage = CoverageResult::Excluded;
@@ -124,7 +124,7 @@ struct InspectedFragment {
 struct PixelHistory {
     int x = 0, y = 0;
     int samples = 1;  ///< per axis: supersampling inspects every sample of the pixel
-    std::vector<InspectedFragment> fragments;  ///< in draw order (sample by sample)
+    std::vector<InspectedFragment> fragments;  ///< in draw order; each triangle's samples in turn
     std::uint32_t background = 0;              ///< packed clear colour
     std::uint32_t finalColor = 0;  ///< packed, what the frame holds at (x, y) after the draw
     float finalDepth = 0.0f;       ///< nearest depth left (+inf: none)

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 
 #include "facet/camera.hpp"
 #include "facet/reference.hpp"
