@@ -12,11 +12,14 @@
 namespace facet::detail {
 namespace {
 
-/// Triangles each thread's front end takes per batch: big enough that the two barriers per
-/// batch cost little, small enough that a batch's records (168 to 300 bytes each) and bins stay
-/// in the core's L2 until the tiles read them: 8192 spilled them, and the tile loop then waited
-/// on memory for every record.
+/// Triangles each thread's front end takes per batch. One thread: few enough that the batch's
+/// records (168 to 300 bytes each) and bins are still in the core's L2 when its tiles read them
+/// (with 8192 the tile loop waited on memory for every record). Several threads: every batch
+/// costs two barriers, and on a loaded machine a barrier waits for a descheduled thread's next
+/// time slice; the bunny at 2 threads took twice as long with 2048 as with 8192 (load 17 on 2
+/// cores), so there the batch stays large.
 constexpr std::size_t kBatchPerThread = 2048;
+constexpr std::size_t kBatchPerThreadShared = 8192;
 
 /// A packed record: the setup, then the planes' fields before the varyings, then a0, d1 and d2
 /// of the layout's varyings only.
@@ -134,7 +137,7 @@ void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool c
         slice.varyings = layout.count();
         slice.recordBytes = recordBytes(slice.varyings);
     }
-    const std::size_t batch = kBatchPerThread * n;
+    const std::size_t batch = (n == 1 ? kBatchPerThread : kBatchPerThreadShared) * n;
     const int slices = static_cast<int>(n);
 
 #pragma omp parallel num_threads(slices)
