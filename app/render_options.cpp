@@ -104,6 +104,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "(anti-aliasing; solid mode; CPU engine)")
         ->check(CLI::Range(1, 4))
         ->capture_default_str();
+    cmd.add_option("--msaa", o.msaa,
+                   "Multisampling: coverage and depth at N standard sample positions per pixel, "
+                   "shaded once per pixel, averaged (edges anti-aliased, not textures or "
+                   "highlights; solid mode)")
+        ->check(CLI::IsMember({1, 2, 4, 8}))
+        ->capture_default_str();
     cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
 }
 
@@ -133,6 +139,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.threads = o.threads;
     settings.subPixelBits = o.subPixelBits;
     settings.supersample = o.supersample;
+    settings.msaa = o.msaa;
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 
@@ -164,8 +171,8 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     if (!bareMesh && w > 0)
         scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
     // Refused before the renderer allocates anything (limits.hpp).
-    if (auto problem =
-            frameMemoryProblem(scene.camera.width, scene.camera.height, settings.supersample))
+    if (auto problem = frameMemoryProblem(scene.camera.width, scene.camera.height,
+                                          settings.supersample, settings.msaa))
         return bad(*problem);
     if (!o.writeScene.empty()) {
         if (Status st = writeScene(scene, o.writeScene)) {

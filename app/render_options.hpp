@@ -38,6 +38,7 @@ struct RenderOptions {
     int threads = 0;
     int subPixelBits = kMaxSubPixelBits;
     int supersample = 1;  ///< samples per pixel axis (supersampling), 1…4
+    int msaa = 1;         ///< samples per pixel of multisampling: 1, 2, 4 or 8
 };
 
 /// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.

@@ -50,6 +50,7 @@ std::string stateText(const ViewerModel& m, long long frames) {
     s << "lighting " << toString(m.settings.lighting) << "\n";
     s << "subpixel_bits " << m.settings.subPixelBits << "\n";
     s << "supersample " << m.settings.supersample << "\n";
+    s << "msaa " << m.settings.msaa << "\n";
     s << "renderer " << toString(m.rendererChoice) << "\n";
     return s.str();
 }

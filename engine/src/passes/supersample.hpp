@@ -14,8 +14,14 @@ namespace facet::detail {
 /// Largest accepted samples per axis (16 per pixel).
 inline constexpr int kMaxSupersample = 4;
 
-/// Averages each n×n block of `big` into one pixel of `out` (resized to big / n): each channel
-/// the rounded mean (alpha too), depth the nearest of the block (empty only if all are).
-void resolveSupersampled(const Framebuffer& big, int n, Framebuffer& out, int threads);
+/// Averages each bx×by block of `big` into one pixel of `out` (resized to big / block): each
+/// channel the rounded mean of the 8-bit values (alpha too), depth the nearest of the block
+/// (empty only if all are). The box filter of supersampling (n×n blocks) and of multisampling's
+/// resolve (SampleBlock, facet/multisample.hpp).
+void resolveSupersampled(const Framebuffer& big, int bx, int by, Framebuffer& out, int threads);
+
+/// Multisampling's start: `samples` resized to `frame` times the block and every sample set to
+/// its pixel's colour and depth, so a draw continues what is in the frame.
+void expandToSamples(const Framebuffer& frame, int bx, int by, Framebuffer& samples, int threads);
 
 }  // namespace facet::detail

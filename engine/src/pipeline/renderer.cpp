@@ -12,6 +12,7 @@
 #include "binning/tiles.hpp"
 #include "facet/camera.hpp"
 #include "facet/legend.hpp"
+#include "facet/multisample.hpp"
 #include "facet/render.hpp"
 #include "lines/lines_points.hpp"
 #include "passes/frame_passes.hpp"
@@ -21,6 +22,7 @@
 #include "pipeline/variants.hpp"
 #include "pipeline/vertex_stage.hpp"
 #include "scene/fingerprint.hpp"
+#include "shading/msaa_loop.hpp"
 #include "shading/scalar_loop.hpp"
 
 namespace facet {
@@ -37,6 +39,7 @@ struct Renderer::Impl {
     NormalsOverlay normalsOverlay;
     TileRenderer tiles;        // bins kept between frames
     Framebuffer supersampled;  // the N×N-size image of a supersampled frame
+    Framebuffer samples;       // the per-sample buffer of a multisampled draw
 
     void updateEdges(std::span<const std::uint32_t> indices) {
         // The edge list is rebuilt (a sort) only when the indices change.
@@ -68,6 +71,31 @@ struct CoverageCounts {
     std::uint16_t* counts;
     int width;
 };
+
+/// Counts covered samples instead (multisampling): `counts` in the per-sample buffer's layout.
+struct SampleCounts {
+    std::uint16_t* counts;
+    int width;  ///< of the per-sample buffer
+    SamplePattern pattern;
+};
+
+std::size_t countSamples(void* context, const CoverageSetup& setup, const Planes&) {
+    const SampleCounts& c = *static_cast<const SampleCounts*>(context);
+    const SamplePattern& sp = c.pattern;
+    std::size_t covered = 0;
+    forEachCoveredSamples(setup, sp, [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
+        ++covered;
+        const std::size_t first =
+            static_cast<std::size_t>(y * sp.block.y) * static_cast<std::size_t>(c.width) +
+            static_cast<std::size_t>(x * sp.block.x);
+        for (int j = 0; j < sp.count; ++j) {
+            if (!(mask & (1u << j))) continue;
+            std::uint16_t& n = c.counts[first + sp.at(j, c.width)];
+            if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+        }
+    });
+    return covered;
+}
 
 std::size_t countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
     const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
@@ -119,10 +147,24 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
     const int threads = resolveThreads(settings.threads);
     const RasterizeFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
+    // Multisampling draws triangles into the per-sample buffer, which starts as the frame's
+    // pixels and is resolved back into it; lines and points stay one sample (README).
+    const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
+    const SampleBlock block = sampleBlock(samples);
+    Framebuffer& target = samples > 1 ? impl_->samples : frame;
+    if (samples > 1) expandToSamples(frame, block.x, block.y, impl_->samples, threads);
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
         switch (settings.mode) {
             case DrawMode::Solid: {
+                if (samples > 1) {
+                    MsaaContext ctx =
+                        MsaaContext::make(impl_->samples, constants, subdivision, samples);
+                    impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
+                                      frame.height, &rasterizeMsaa<V>, &ctx, threads,
+                                      clampedSubPixelBits(settings), stats, SamplePattern::kReach);
+                    break;
+                }
                 RasterContext ctx{&frame, &constants, subdivision, spans};
                 impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
                                   frame.height, &rasterizeTriangle<V>, &ctx, threads,
@@ -138,15 +180,30 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
                 break;
         }
     });
-    if (settings.shader == ShaderKind::Depth) resolveDepthColors(frame, stats, threads);
+    if (settings.shader == ShaderKind::Depth) resolveDepthColors(target, stats, threads);
+    if (samples > 1) resolveSupersampled(impl_->samples, block.x, block.y, frame, threads);
     return stats;
+}
+
+const Framebuffer& Renderer::samples() const {
+    return impl_->samples;
 }
 
 void Renderer::countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
                              int height, std::vector<std::uint16_t>& counts) {
-    counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+    const int samples = msaaSamples(settings.msaa);
+    counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                      static_cast<std::size_t>(samples),
+                  0);
     if (width <= 0 || height <= 0) return;
     RenderStats stats;
+    if (samples > 1) {
+        SampleCounts ctx{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)};
+        impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height,
+                          &countSamples, &ctx, resolveThreads(settings.threads),
+                          clampedSubPixelBits(settings), stats, SamplePattern::kReach);
+        return;
+    }
     CoverageCounts ctx{counts.data(), width};
     impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
                       &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
@@ -164,7 +221,7 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     RenderStats stats = impl_->renderView(
         *this, scene, resizedCamera(cam, cam.width * n, cam.height * n), big, impl_->supersampled);
     Clock::time_point t = Clock::now();
-    resolveSupersampled(impl_->supersampled, n, frame, resolveThreads(settings.threads));
+    resolveSupersampled(impl_->supersampled, n, n, frame, resolveThreads(settings.threads));
     if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
         drawDepthLegend(frame, stats.depthNear, stats.depthFar);
     stats.postMs += msSince(t);

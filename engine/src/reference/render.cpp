@@ -42,7 +42,11 @@ std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings&
     return ends;
 }
 
-Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
+namespace {
+
+// Builds every Input stream of the scene (rules 3, 10, 14) and calls draw(input, width, height).
+template <class Draw>
+Image withSceneInput(const Scene& scene, const RenderSettings& settings, Draw&& draw) {
     const Mesh& mesh = *scene.mesh;
     const std::size_t n = mesh.positions.size();
     const std::vector<glm::dvec4> clip = projectScene(scene);
@@ -79,7 +83,21 @@ Image render(const Scene& scene, const RenderSettings& settings, const Progress&
     input.texture = scene.texture.get();
     input.lighting = scene.lighting;
     input.eye = scene.camera.eye;
-    return draw(input, settings, scene.camera.width, scene.camera.height, progress);
+    return draw(input, scene.camera.width, scene.camera.height);
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
+    return withSceneInput(scene, settings, [&](const Input& input, int width, int height) {
+        return draw(input, settings, width, height, progress);
+    });
+}
+
+Image renderSamples(const Scene& scene, const RenderSettings& settings) {
+    return withSceneInput(scene, settings, [&](const Input& input, int width, int height) {
+        return drawSamples(input, settings, width, height);
+    });
 }
 
 }  // namespace facet::reference

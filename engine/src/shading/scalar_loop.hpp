@@ -27,32 +27,21 @@ inline bool perspectiveWeights(const Planes& p, float dx, float dy, float& m1, f
     return true;
 }
 
-/// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
+/// The interpolation weights (m1, m2) of vertices 1 and 2 in variant V's mode at pixel (x, y),
+/// (dx, dy) from the planes' base, `depth` = 1/q there. Subdivided keeps the exact weights at
+/// the two ends of the current N-pixel span while rows are walked left to right.
 template <class V>
-[[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
-                                              const Planes& p) {
-    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
-    Framebuffer& fb = *ctx.fb;
-    const DrawConstants& k = *ctx.constants;
-    constexpr VaryingLayout L = V::kLayout;
-    // Subdivided: the exact weights at the two ends of the current N-pixel span, kept while the
-    // loop stays in it (rows are walked left to right).
+struct PixelWeights {
+    int n = 16;  ///< N of Interp::Subdivided
+    float invN = 1.0f / 16.0f;
     int spanY = INT_MIN, spanX0 = INT_MIN;
     bool spanExact = false;
     float s1a = 0.0f, s2a = 0.0f, s1b = 0.0f, s2b = 0.0f;
-    const int n = ctx.subdivision;
-    const float invN = 1.0f / static_cast<float>(n);
-    std::size_t fragments = 0;
 
-    forEachCovered(setup, [&](int x, int y) {
-        ++fragments;
-        const auto dx = static_cast<float>(x - p.baseX);
-        const auto dy = static_cast<float>(y - p.baseY);
-        const float depth = 1.0f / Planes::eval(p.q, dx, dy);
-        const std::size_t i = fb.index(x, y);
-        if (!passesDepth<V::kShader>(fb, i, depth)) return;
+    explicit PixelWeights(int subdivision)
+        : n(subdivision), invN(1.0f / static_cast<float>(subdivision)) {}
 
-        float m1 = 0.0f, m2 = 0.0f;
+    void at(const Planes& p, int x, int y, float dx, float dy, float depth, float& m1, float& m2) {
         if constexpr (V::kInterp == Interp::Affine) {
             m1 = Planes::eval(p.l1, dx, dy);
             m2 = Planes::eval(p.l2, dx, dy);
@@ -77,29 +66,61 @@ template <class V>
                 m2 = s2a + (s2b - s2a) * t;
             }
         }
-        float a[V::kCount > 0 ? V::kCount : 1];
-        for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
+    }
+};
 
-        float lod = 0.0f;
-        if constexpr (V::kDerivatives) {
-            // d(weights)/dx and /dy of the mode's own interpolation: constant when affine, the
-            // analytic derivative of the perspective-correct weights otherwise.
-            float w1x = p.l1[1], w1y = p.l1[2], w2x = p.l2[1], w2y = p.l2[2];
-            if constexpr (V::kInterp != Interp::Affine) {
-                // The perspective weights at this pixel: already m1, m2 unless subdivided.
-                constexpr bool exact = V::kInterp == Interp::Perspective;
-                const float pm1 = exact ? m1 : Planes::eval(p.u1, dx, dy) * depth;
-                const float pm2 = exact ? m2 : Planes::eval(p.u2, dx, dy) * depth;
-                w1x = (p.u1[1] - pm1 * p.q[1]) * depth;
-                w1y = (p.u1[2] - pm1 * p.q[2]) * depth;
-                w2x = (p.u2[1] - pm2 * p.q[1]) * depth;
-                w2y = (p.u2[2] - pm2 * p.q[2]) * depth;
-            }
-            const int u = L.uvAt();
-            const glm::vec2 d1(p.d1[u], p.d1[u + 1]), d2(p.d2[u], p.d2[u + 1]);
-            lod = mipLevel(*k.texture, d1 * w1x + d2 * w2x, d1 * w1y + d2 * w2y);
+/// The colour of variant V's fragment at (dx, dy) from the planes' base, `depth` = 1/q there,
+/// weights (m1, m2) from PixelWeights (or exact ones off the pixel grid): the varyings, the
+/// texture level of detail, then fragmentColor().
+template <class V>
+inline glm::vec3 shadeAt(const Planes& p, const DrawConstants& k, float dx, float dy, float depth,
+                         float m1, float m2) {
+    constexpr VaryingLayout L = V::kLayout;
+    float a[V::kCount > 0 ? V::kCount : 1];
+    for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
+
+    float lod = 0.0f;
+    if constexpr (V::kDerivatives) {
+        // d(weights)/dx and /dy of the mode's own interpolation: constant when affine, the
+        // analytic derivative of the perspective-correct weights otherwise.
+        float w1x = p.l1[1], w1y = p.l1[2], w2x = p.l2[1], w2y = p.l2[2];
+        if constexpr (V::kInterp != Interp::Affine) {
+            // The perspective weights at this pixel: already m1, m2 unless subdivided.
+            constexpr bool exact = V::kInterp == Interp::Perspective;
+            const float pm1 = exact ? m1 : Planes::eval(p.u1, dx, dy) * depth;
+            const float pm2 = exact ? m2 : Planes::eval(p.u2, dx, dy) * depth;
+            w1x = (p.u1[1] - pm1 * p.q[1]) * depth;
+            w1y = (p.u1[2] - pm1 * p.q[2]) * depth;
+            w2x = (p.u2[1] - pm2 * p.q[1]) * depth;
+            w2y = (p.u2[2] - pm2 * p.q[2]) * depth;
         }
-        storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
+        const int u = L.uvAt();
+        const glm::vec2 d1(p.d1[u], p.d1[u + 1]), d2(p.d2[u], p.d2[u + 1]);
+        lod = mipLevel(*k.texture, d1 * w1x + d2 * w2x, d1 * w1y + d2 * w2y);
+    }
+    return fragmentColor<V>(a, k, lod);
+}
+
+/// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
+template <class V>
+[[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
+                                              const Planes& p) {
+    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
+    Framebuffer& fb = *ctx.fb;
+    const DrawConstants& k = *ctx.constants;
+    PixelWeights<V> weights(ctx.subdivision);
+    std::size_t fragments = 0;
+
+    forEachCovered(setup, [&](int x, int y) {
+        ++fragments;
+        const auto dx = static_cast<float>(x - p.baseX);
+        const auto dy = static_cast<float>(y - p.baseY);
+        const float depth = 1.0f / Planes::eval(p.q, dx, dy);
+        const std::size_t i = fb.index(x, y);
+        if (!passesDepth<V::kShader>(fb, i, depth)) return;
+        float m1 = 0.0f, m2 = 0.0f;
+        weights.at(p, x, y, dx, dy, depth, m1, m2);
+        storeFragment<V::kShader>(fb, i, depth, shadeAt<V>(p, k, dx, dy, depth, m1, m2));
     });
     return fragments;
 }
