@@ -216,7 +216,7 @@ TEST(Msaa, PerSampleCoverageMatchesTheReference) {
 }
 
 TEST(Msaa, KnotMatchesTheReferencePerSample) {
-    const Scene scene = knot(96, 72);
+    const Scene scene = knot(160, 120);
     for (const int n : facet::kMsaaCounts) {
         for (const facet::Lighting lighting : {facet::Lighting::Gouraud, facet::Lighting::Phong}) {
             RenderSettings s;

@@ -33,8 +33,8 @@
 //     box-filter resolve of its samples in 8 bits: per channel the rounded mean of the samples'
 //     rule-9 bytes, depth the nearest. The normals display (rule 14) is drawn on the resolved
 //     image, one sample per pixel. Rule 8(a) applies per sample, and to the centre's inside
-//     test (all the pixel's samples are flagged when it is ambiguous); a pixel is ambiguous
-//     when any of its samples is.
+//     test: one ambiguous point flags all the pixel's samples, since it may move the
+//     shading point; a resolved pixel is ambiguous when any of its samples is.
 //  5. Shaders: Simple writes colour only (last wins); Painter tests LESS and writes colour and
 //     depth; Depth is Painter, then maps every drawn pixel's depth to viridis over [dmin, dmax];
 //     Texture is Painter with the colour of rule 13.
@@ -207,8 +207,8 @@ struct SampleGrid {
 
 // Rule 8(a): the snapped edges of the fast path lie within 1/256 px of ours, so sample points
 // that close to an edge (and not clearly outside) may be covered by this triangle or its
-// neighbour. With several samples the centre's inside test (which picks centre or centroid
-// shading) is judged the same way and flags the whole pixel.
+// neighbour. With several samples the shading point (centre or centroid) hangs on the centre's
+// and every sample's inside test, so one ambiguous point flags all the pixel's samples.
 void markEdgeAmbiguity(Image& img, const std::array<glm::dvec2, 3>& s, const SampleGrid& grid,
                        int width, int height) {
     std::array<double, 3> len{};
@@ -231,11 +231,18 @@ void markEdgeAmbiguity(Image& img, const std::array<glm::dvec2, 3>& s, const Sam
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
             const glm::dvec2 c{x + 0.5, y + 0.5};
-            const bool centre = grid.count > 1 && ambiguousAt(c);
-            for (int k = 0; k < grid.count; ++k) {
-                if (centre || ambiguousAt(c + grid.offset[static_cast<std::size_t>(k)]))
-                    img.ambiguous[pixelIndex(img, grid.sx(x, k), grid.sy(y, k))] = 1;
+            if (grid.count == 1) {
+                if (ambiguousAt(c)) img.ambiguous[pixelIndex(img, x, y)] = 1;
+                continue;
             }
+            // The shading point depends on the centre's and every sample's inside test, so
+            // one ambiguous decision may change the colour of all the pixel's samples.
+            bool any = ambiguousAt(c);
+            for (int k = 0; k < grid.count && !any; ++k)
+                any = ambiguousAt(c + grid.offset[static_cast<std::size_t>(k)]);
+            if (!any) continue;
+            for (int k = 0; k < grid.count; ++k)
+                img.ambiguous[pixelIndex(img, grid.sx(x, k), grid.sy(y, k))] = 1;
         }
     }
 }
