@@ -395,7 +395,7 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
     const Outcome r = run("accuracy " + course + "example_textured.scene --texture " + course +
                           "brick.jpg --samples 2 --frames 1 --warmup 0 --csv " + out("a.csv"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find("[13/13] example_textured samples 4x4:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("[16/16] example_textured samples msaa8:"), std::string::npos) << r.out;
     std::ifstream csv(out("a.csv"));
     std::string line;
     int comments = 0;
@@ -411,10 +411,10 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
         rows.push_back(cells);
     }
     EXPECT_GE(comments, 3);
-    ASSERT_EQ(rows.size(), 14u);  // header + 13 methods
+    ASSERT_EQ(rows.size(), 17u);  // header + 16 methods
     ASSERT_EQ(rows[0].size(), 14u);
     EXPECT_EQ(rows[0][9], "rmse");
-    double affine = -1.0, perspective = -1.0, one = -1.0, sixteen = -1.0;
+    double affine = -1.0, perspective = -1.0, one = -1.0, sixteen = -1.0, msaa4 = -1.0;
     for (std::size_t k = 1; k < rows.size(); ++k) {
         ASSERT_EQ(rows[k].size(), 14u) << k;
         EXPECT_EQ(rows[k][0], "example_textured");
@@ -424,6 +424,7 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
         if (rows[k][2] == "perspective") perspective = std::stod(rows[k][9]);
         if (rows[k][2] == "1x1") one = std::stod(rows[k][9]);
         if (rows[k][2] == "4x4") sixteen = std::stod(rows[k][9]);
+        if (rows[k][2] == "msaa4") msaa4 = std::stod(rows[k][9]);
     }
     ASSERT_GE(affine, 0.0);
     ASSERT_GE(perspective, 0.0);
@@ -431,6 +432,8 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
     ASSERT_GE(one, 0.0);
     ASSERT_GE(sixteen, 0.0);
     EXPECT_LT(sixteen, one);
+    ASSERT_GE(msaa4, 0.0);
+    EXPECT_LT(msaa4, one);
 }
 
 TEST_F(Cli, AccuracyBadInputIsOneLine) {

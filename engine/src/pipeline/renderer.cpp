@@ -18,6 +18,7 @@
 #include "passes/frame_passes.hpp"
 #include "passes/normals_overlay.hpp"
 #include "passes/supersample.hpp"
+#include "pipeline/msaa_draw.hpp"
 #include "pipeline/span_targets.hpp"
 #include "pipeline/variants.hpp"
 #include "pipeline/vertex_stage.hpp"
@@ -152,34 +153,32 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
     const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
     const SampleBlock block = sampleBlock(samples);
     Framebuffer& target = samples > 1 ? impl_->samples : frame;
-    if (samples > 1) expandToSamples(frame, block.x, block.y, impl_->samples, threads);
-    dispatch(key, [&](auto variant) {
-        using V = decltype(variant);
-        switch (settings.mode) {
-            case DrawMode::Solid: {
-                if (samples > 1) {
-                    MsaaContext ctx =
-                        MsaaContext::make(impl_->samples, constants, subdivision, samples);
+    if (samples > 1) {  // Solid mode: triangles only
+        expandToSamples(frame, block.x, block.y, impl_->samples, threads);
+        drawMsaaTriangles(impl_->tiles, key, input, settings, constants, impl_->samples, samples,
+                          frame.width, frame.height, subdivision, threads,
+                          clampedSubPixelBits(settings), stats);
+    } else {
+        dispatch(key, [&](auto variant) {
+            using V = decltype(variant);
+            switch (settings.mode) {
+                case DrawMode::Solid: {
+                    RasterContext ctx{&frame, &constants, subdivision, spans};
                     impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
-                                      frame.height, &rasterizeMsaa<V>, &ctx, threads,
-                                      clampedSubPixelBits(settings), stats, SamplePattern::kReach);
+                                      frame.height, &rasterizeTriangle<V>, &ctx, threads,
+                                      clampedSubPixelBits(settings), stats);
                     break;
                 }
-                RasterContext ctx{&frame, &constants, subdivision, spans};
-                impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
-                                  frame.height, &rasterizeTriangle<V>, &ctx, threads,
-                                  clampedSubPixelBits(settings), stats);
-                break;
+                case DrawMode::Wireframe:
+                    impl_->updateEdges(input.indices);
+                    drawLines<V>(input, impl_->edges, frame, constants, stats);
+                    break;
+                case DrawMode::Vertices:
+                    drawPoints<V>(input, settings.pointSize, frame, constants, stats);
+                    break;
             }
-            case DrawMode::Wireframe:
-                impl_->updateEdges(input.indices);
-                drawLines<V>(input, impl_->edges, frame, constants, stats);
-                break;
-            case DrawMode::Vertices:
-                drawPoints<V>(input, settings.pointSize, frame, constants, stats);
-                break;
-        }
-    });
+        });
+    }
     if (settings.shader == ShaderKind::Depth) resolveDepthColors(target, stats, threads);
     if (samples > 1) resolveSupersampled(impl_->samples, block.x, block.y, frame, threads);
     return stats;
