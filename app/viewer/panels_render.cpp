@@ -137,12 +137,13 @@ void renderPanel(App& app) {
             else
                 s.msaa = samples;
         }
-        ImGui::TextDisabled("(?)");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "samples (supersampling) shades every sample: N x N the work, and it smooths\n"
                 "edges, textures and highlights alike. MSAA tests coverage and depth at 2, 4 or\n"
                 "8 points per pixel but shades each pixel once: edges only, for much less work.");
+        ImGui::TextDisabled("samples: each sample shaded, N x N work");
+        ImGui::TextDisabled("MSAA: shaded once a pixel, edges only");
         ImGui::EndDisabled();
     }
     float rgb[3];

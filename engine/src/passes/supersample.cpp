@@ -1,6 +1,7 @@
 #include "passes/supersample.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 
 namespace facet::detail {
@@ -10,6 +11,8 @@ void resolveSupersampled(const Framebuffer& big, int bx, int by, Framebuffer& ou
     out.resize(w, h);
     const std::uint32_t count = static_cast<std::uint32_t>(bx * by);
     const std::uint32_t half = count / 2;  // round to nearest
+    // Every block but 3×3 has a power-of-two count: a shift, not a division per channel.
+    const int shift = std::has_single_bit(count) ? std::countr_zero(count) : -1;
 #pragma omp parallel for num_threads(threads) if (static_cast <long>(w) * h > 65536)
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
@@ -24,7 +27,10 @@ void resolveSupersampled(const Framebuffer& big, int bx, int by, Framebuffer& ou
                 }
             }
             std::uint32_t packed = 0;
-            for (int k = 0; k < 4; ++k) packed |= ((sum[k] + half) / count) << (8 * k);
+            for (int k = 0; k < 4; ++k) {
+                const std::uint32_t v = sum[k] + half;
+                packed |= (shift >= 0 ? v >> shift : v / count) << (8 * k);
+            }
             const std::size_t i = out.index(x, y);
             out.color[i] = packed;
             out.depth[i] = nearest;

@@ -41,7 +41,8 @@ struct PixelWeights {
     explicit PixelWeights(int subdivision)
         : n(subdivision), invN(1.0f / static_cast<float>(subdivision)) {}
 
-    void at(const Planes& p, int x, int y, float dx, float dy, float depth, float& m1, float& m2) {
+    [[gnu::always_inline]] void at(const Planes& p, int x, int y, float dx, float dy, float depth,
+                                   float& m1, float& m2) {
         if constexpr (V::kInterp == Interp::Affine) {
             m1 = Planes::eval(p.l1, dx, dy);
             m2 = Planes::eval(p.l2, dx, dy);
@@ -73,8 +74,8 @@ struct PixelWeights {
 /// weights (m1, m2) from PixelWeights (or exact ones off the pixel grid): the varyings, the
 /// texture level of detail, then fragmentColor().
 template <class V>
-inline glm::vec3 shadeAt(const Planes& p, const DrawConstants& k, float dx, float dy, float depth,
-                         float m1, float m2) {
+[[gnu::always_inline]] inline glm::vec3 shadeAt(const Planes& p, const DrawConstants& k, float dx,
+                                                float dy, float depth, float m1, float m2) {
     constexpr VaryingLayout L = V::kLayout;
     float a[V::kCount > 0 ? V::kCount : 1];
     for (int j = 0; j < V::kCount; ++j) a[j] = p.a0[j] + m1 * p.d1[j] + m2 * p.d2[j];
