@@ -298,7 +298,7 @@ TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
     // Without OpenGL the engine is still measured, and the exit status says what is missing.
     const bool noGl = csv.has("opengl: unavailable");
     ASSERT_EQ(r.exitCode, noGl ? 1 : 0) << r.out;
-    EXPECT_NE(r.out.find("[1/32] sphere_quick painter engine t=1 ... "), std::string::npos)
+    EXPECT_NE(r.out.find("[1/40] sphere_quick painter engine t=1 ... "), std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("engine/opengl"), std::string::npos) << r.out;
     for (const char* c : {"date: ", "cpu: ", "cores: ", "opengl: ", "compiler: ", "threads: 1, 2"})
@@ -306,13 +306,14 @@ TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
     EXPECT_EQ(csv.header,
               "case,config,renderer,threads,width,height,triangles,frames,median_ms,min_ms,"
               "max_ms,mtri_per_s,mpix_per_s");
-    // 2 cases x 4 configs x 2 thread counts per renderer, and 3 floors per case.
-    EXPECT_EQ(csv.count("engine"), 16);
+    // 2 cases x 5 configs (gouraud_msaa4 included) x 2 thread counts per renderer, and 3
+    // floors per case.
+    EXPECT_EQ(csv.count("engine"), 20);
     EXPECT_EQ(csv.count("floor_fill_color") + csv.count("floor_fill_color_depth") +
                   csv.count("floor_copy_color"),
               6);
     if (!noGl) {
-        EXPECT_EQ(csv.count("opengl"), 16) << r.out;
+        EXPECT_EQ(csv.count("opengl"), 20) << r.out;
     }
     for (const CsvRow& row : csv.rows) {
         expectSane(row);

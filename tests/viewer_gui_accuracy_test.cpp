@@ -38,7 +38,7 @@ xdotool mousemove --window "$wid" 57 458 click 1
 i=0
 while ! grep -q "accuracy measured" viewer.log && [ "$i" -lt 400 ]; do sleep 0.1; i=$((i + 1)); done
 sleep 0.5
-xdotool mousemove --window "$wid" 508 519 click 1
+xdotool mousemove --window "$wid" 508 468 click 1
 sleep 0.5
 xdotool mousemove --window "$wid" 900 450 key Escape
 i=0
