@@ -194,9 +194,9 @@ TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     EXPECT_EQ(report->leftOut, "");
     EXPECT_GT(report->groundTruthSeconds, 0.0);
     ASSERT_EQ(report->rows.size(), 14u);
-    for (const char* m : {"affine", "subdivided:8", "subdivided:16", "subdivided:32", "perspective",
-                          "nearest", "bilinear", "trilinear", "1x1", "2x2", "4x4", "msaa2", "msaa4",
-                          "msaa8"}) {
+    for (const char* m :
+         {"affine", "subdivided:8", "subdivided:16", "subdivided:32", "perspective", "nearest",
+          "bilinear", "trilinear", "1x1", "2x2", "4x4", "msaa2", "msaa4", "msaa8"}) {
         const AccuracyRow& r = row(*report, m);
         EXPECT_GT(r.times.median, 0.0) << m;
         EXPECT_EQ(r.times.frames, 2) << m;
