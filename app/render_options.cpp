@@ -111,7 +111,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "each pixel), bin-load (triangles per 64x64 tile), depth-test (passed, "
                    "failed, no fragment), texture-lod (mip level under trilinear), interp-error "
                    "(affine against perspective, 8-bit steps); CPU engine")
-        ->check(CLI::IsMember(choices(debugViewNames())))
+        ->check(CLI::IsMember(choices(debugViewNames()))) cmd
+        .add_option("--msaa", o.msaa,
+                    "Multisampling: coverage and depth at N standard sample positions per pixel, "
+                    "shaded once per pixel, averaged (edges anti-aliased, not textures or "
+                    "highlights; solid mode)")
+        ->check(CLI::IsMember({1, 2, 4, 8}))
         ->capture_default_str();
     cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
 }
@@ -143,6 +148,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.subPixelBits = o.subPixelBits;
     settings.supersample = o.supersample;
     settings.view = *parseDebugView(o.view);
+    settings.msaa = o.msaa;
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 
@@ -174,8 +180,8 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     if (!bareMesh && w > 0)
         scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
     // Refused before the renderer allocates anything (limits.hpp).
-    if (auto problem =
-            frameMemoryProblem(scene.camera.width, scene.camera.height, settings.supersample))
+    if (auto problem = frameMemoryProblem(scene.camera.width, scene.camera.height,
+                                          settings.supersample, settings.msaa))
         return bad(*problem);
     if (!o.writeScene.empty()) {
         if (Status st = writeScene(scene, o.writeScene)) {

@@ -38,6 +38,7 @@ struct RenderOptions {
     int threads = 0;
     int subPixelBits = kMaxSubPixelBits;
     int supersample = 1;        ///< samples per pixel axis (supersampling), 1…4
+    int msaa = 1;               ///< samples per pixel of multisampling: 1, 2, 4 or 8
     std::string view = "none";  ///< --view: a debug view instead of the shaded image
 };
 

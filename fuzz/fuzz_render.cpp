@@ -34,6 +34,7 @@ facet::RenderSettings settingsFrom(const std::uint8_t* b) {
     s.subPixelBits = facet::kMinSubPixelBits + b[4] % 7;
     s.subdivision = facet::kMinSubdivision + (b[4] >> 3);
     s.pointSize = 1 + b[6] % 16;
+    s.msaa = 1 << ((b[6] >> 4) & 3);  // 1, 2, 4, 8
     s.nearPlane = (b[7] & 1) ? 0.0 : 1e-3 * (b[7] >> 1);
     s.threads = 1;
     return s;

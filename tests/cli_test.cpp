@@ -338,7 +338,7 @@ TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
     // Without OpenGL the engine is still measured, and the exit status says what is missing.
     const bool noGl = csv.has("opengl: unavailable");
     ASSERT_EQ(r.exitCode, noGl ? 1 : 0) << r.out;
-    EXPECT_NE(r.out.find("[1/32] sphere_quick painter engine t=1 ... "), std::string::npos)
+    EXPECT_NE(r.out.find("[1/40] sphere_quick painter engine t=1 ... "), std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("engine/opengl"), std::string::npos) << r.out;
     for (const char* c : {"date: ", "cpu: ", "cores: ", "opengl: ", "compiler: ", "threads: 1, 2"})
@@ -346,13 +346,14 @@ TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
     EXPECT_EQ(csv.header,
               "case,config,renderer,threads,width,height,triangles,frames,median_ms,min_ms,"
               "max_ms,mtri_per_s,mpix_per_s");
-    // 2 cases x 4 configs x 2 thread counts per renderer, and 3 floors per case.
-    EXPECT_EQ(csv.count("engine"), 16);
+    // 2 cases x 5 configs (gouraud_msaa4 included) x 2 thread counts per renderer, and 3
+    // floors per case.
+    EXPECT_EQ(csv.count("engine"), 20);
     EXPECT_EQ(csv.count("floor_fill_color") + csv.count("floor_fill_color_depth") +
                   csv.count("floor_copy_color"),
               6);
     if (!noGl) {
-        EXPECT_EQ(csv.count("opengl"), 16) << r.out;
+        EXPECT_EQ(csv.count("opengl"), 20) << r.out;
     }
     for (const CsvRow& row : csv.rows) {
         expectSane(row);
@@ -435,7 +436,7 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
     const Outcome r = run("accuracy " + course + "example_textured.scene --texture " + course +
                           "brick.jpg --samples 2 --frames 1 --warmup 0 --csv " + out("a.csv"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find("[13/13] example_textured samples 4x4:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("[16/16] example_textured samples msaa8:"), std::string::npos) << r.out;
     std::ifstream csv(out("a.csv"));
     std::string line;
     int comments = 0;
@@ -451,10 +452,10 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
         rows.push_back(cells);
     }
     EXPECT_GE(comments, 3);
-    ASSERT_EQ(rows.size(), 14u);  // header + 13 methods
+    ASSERT_EQ(rows.size(), 17u);  // header + 16 methods
     ASSERT_EQ(rows[0].size(), 14u);
     EXPECT_EQ(rows[0][9], "rmse");
-    double affine = -1.0, perspective = -1.0, one = -1.0, sixteen = -1.0;
+    double affine = -1.0, perspective = -1.0, one = -1.0, sixteen = -1.0, msaa4 = -1.0;
     for (std::size_t k = 1; k < rows.size(); ++k) {
         ASSERT_EQ(rows[k].size(), 14u) << k;
         EXPECT_EQ(rows[k][0], "example_textured");
@@ -464,6 +465,7 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
         if (rows[k][2] == "perspective") perspective = std::stod(rows[k][9]);
         if (rows[k][2] == "1x1") one = std::stod(rows[k][9]);
         if (rows[k][2] == "4x4") sixteen = std::stod(rows[k][9]);
+        if (rows[k][2] == "msaa4") msaa4 = std::stod(rows[k][9]);
     }
     ASSERT_GE(affine, 0.0);
     ASSERT_GE(perspective, 0.0);
@@ -471,6 +473,8 @@ TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
     ASSERT_GE(one, 0.0);
     ASSERT_GE(sixteen, 0.0);
     EXPECT_LT(sixteen, one);
+    ASSERT_GE(msaa4, 0.0);
+    EXPECT_LT(msaa4, one);
 }
 
 TEST_F(Cli, AccuracyBadInputIsOneLine) {

@@ -208,6 +208,19 @@ TEST(Inspect, OutsideTheImageOrInWireframeItSaysSo) {
     EXPECT_FALSE(h.notes.empty());
 }
 
+TEST(Inspect, AMultisampledFrameIsNotInspectedAndItSaysSo) {
+    // Its colour comes from per-sample coverage and possibly a centroid, not the centre alone.
+    const Scene scene = twoTrianglesAndABackOne();
+    RenderSettings settings;
+    settings.msaa = 4;
+    const PixelHistory h = inspectPixel(scene, settings, 20, 20);
+    EXPECT_TRUE(h.fragments.empty());
+    ASSERT_FALSE(h.notes.empty());
+    EXPECT_NE(h.notes.front().find("--msaa 1"), std::string::npos);
+    settings.msaa = 1;  // the same pixel at one sample is listed
+    EXPECT_FALSE(inspectPixel(scene, settings, 20, 20).fragments.empty());
+}
+
 // --- Real scenes: the final colour is the frame's pixel ------------------------------------
 
 struct RealCase {

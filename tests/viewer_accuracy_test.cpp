@@ -125,7 +125,8 @@ TEST(AccuracyMethods, AroundTheUserSettingsKeepTheirShaderAndCombine) {
     user.lighting = Lighting::Gouraud;
     user.showNormals = true;
     const std::vector<app::AccuracyMethod> methods = app::accuracyMethods(scene, user);
-    ASSERT_EQ(methods.size(), 13u);  // 5 interpolations, 3 filters, 2 lightings, 3 samplings
+    // 5 interpolations, 3 filters, 2 lightings, 3 supersamplings, 3 multisamplings
+    ASSERT_EQ(methods.size(), 16u);
     for (const app::AccuracyMethod& m : methods) {
         EXPECT_EQ(m.settings.shader, ShaderKind::Texture) << m.name;
         EXPECT_TRUE(m.settings.combine) << m.name;
@@ -138,6 +139,11 @@ TEST(AccuracyMethods, AroundTheUserSettingsKeepTheirShaderAndCombine) {
             EXPECT_EQ(m.settings.lighting, Lighting::Gouraud) << m.name;
         }
         EXPECT_EQ(m.settings.supersample, m.name == "2x2" ? 2 : m.name == "4x4" ? 4 : 1) << m.name;
+        EXPECT_EQ(m.settings.msaa, m.name == "msaa2"   ? 2
+                                   : m.name == "msaa4" ? 4
+                                   : m.name == "msaa8" ? 8
+                                                       : 1)
+            << m.name;
     }
     EXPECT_EQ(methods[0].name, "affine");
     EXPECT_EQ(methods[4].name, "perspective");
@@ -146,15 +152,15 @@ TEST(AccuracyMethods, AroundTheUserSettingsKeepTheirShaderAndCombine) {
     // Painter without lighting: the interpolations alone (no texture, nothing lit to compare).
     RenderSettings painter;
     painter.shader = ShaderKind::Painter;
-    EXPECT_EQ(app::accuracyMethods(scene, painter).size(), 8u);
+    EXPECT_EQ(app::accuracyMethods(scene, painter).size(), 11u);
     // Texture without combine ignores the lit colour: no lighting axis.
     RenderSettings plainTexture = textured();
     plainTexture.lighting = Lighting::Phong;
-    EXPECT_EQ(app::accuracyMethods(scene, plainTexture).size(), 11u);
+    EXPECT_EQ(app::accuracyMethods(scene, plainTexture).size(), 14u);
 
     // The one-argument form is the overload around baseSettings(), as before.
     const std::vector<app::AccuracyMethod> base = app::accuracyMethods(scene);
-    ASSERT_EQ(base.size(), 13u);
+    ASSERT_EQ(base.size(), 16u);
     for (const app::AccuracyMethod& m : base) {
         EXPECT_EQ(m.settings.shader, ShaderKind::Texture);
         EXPECT_TRUE(m.settings.combine);
@@ -187,9 +193,10 @@ TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     EXPECT_EQ(report->frames, 2);
     EXPECT_EQ(report->leftOut, "");
     EXPECT_GT(report->groundTruthSeconds, 0.0);
-    ASSERT_EQ(report->rows.size(), 11u);
-    for (const char* m : {"affine", "subdivided:8", "subdivided:16", "subdivided:32", "perspective",
-                          "nearest", "bilinear", "trilinear", "1x1", "2x2", "4x4"}) {
+    ASSERT_EQ(report->rows.size(), 14u);
+    for (const char* m :
+         {"affine", "subdivided:8", "subdivided:16", "subdivided:32", "perspective", "nearest",
+          "bilinear", "trilinear", "1x1", "2x2", "4x4", "msaa2", "msaa4", "msaa8"}) {
         const AccuracyRow& r = row(*report, m);
         EXPECT_GT(r.times.median, 0.0) << m;
         EXPECT_EQ(r.times.frames, 2) << m;
@@ -206,9 +213,11 @@ TEST(AccuracyJob, MeasuresEveryMethodAndPerspectiveBeatsAffine) {
     EXPECT_EQ(row(*report, "affine").error.rmse, row(*report, "bilinear").error.rmse);
     EXPECT_EQ(row(*report, "affine").pareto, row(*report, "bilinear").pareto);
     const std::string state = accuracyStateText(report.get());
-    EXPECT_NE(state.find("accuracy_rows 11\n"), std::string::npos) << state;
-    // Supersampling removes the silhouette aliasing every one-sample method shares.
+    EXPECT_NE(state.find("accuracy_rows 14\n"), std::string::npos) << state;
+    // Supersampling and multisampling remove the silhouette aliasing every one-sample method
+    // shares.
     EXPECT_LT(row(*report, "4x4").error.rmse, row(*report, "1x1").error.rmse);
+    EXPECT_LT(row(*report, "msaa4").error.rmse, row(*report, "1x1").error.rmse);
     EXPECT_NE(state.find("accuracy_interp_perspective "), std::string::npos) << state;
 }
 
@@ -221,7 +230,8 @@ TEST(AccuracyJob, TheTruthIsFinerThanEveryMethodInTheTable) {
     EXPECT_EQ(leftOut, "4x4");
     for (const app::AccuracyMethod& m : kept) EXPECT_LT(m.settings.supersample, 4) << m.name;
     kept = methodsBelowTruth(all, 2, &leftOut);
-    EXPECT_EQ(leftOut, "2x2, 4x4");
+    // A 2x2 truth has 4 samples per pixel: MSAA 4x and 8x are not below it.
+    EXPECT_EQ(leftOut, "2x2, 4x4, msaa4, msaa8");
     EXPECT_EQ(methodsBelowTruth(all, 8, &leftOut).size(), all.size());
     EXPECT_EQ(leftOut, "");
 

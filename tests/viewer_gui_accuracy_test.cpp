@@ -38,7 +38,7 @@ xdotool mousemove --window "$wid" 57 458 click 1
 i=0
 while ! grep -q "accuracy measured" viewer.log && [ "$i" -lt 400 ]; do sleep 0.1; i=$((i + 1)); done
 sleep 0.5
-xdotool mousemove --window "$wid" 508 519 click 1
+xdotool mousemove --window "$wid" 508 468 click 1
 sleep 0.5
 xdotool mousemove --window "$wid" 900 450 key Escape
 i=0
@@ -60,16 +60,17 @@ TEST_F(ViewerGui, MeasuringAgainstTheGroundTruthFillsTheTableAndARowPicksTheMeth
         run("timeout 90 " + kXvfb + "sh " + path("measure.sh") + " " + dir.string() + " " +
             kViewer + " --compare --size " + kWindow1280 + " --no-vsync --lighting phong");
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find("accuracy measured, 9 methods at 1280x720, ground truth 4x4 samples"),
+    EXPECT_NE(r.out.find("accuracy measured, 12 methods at 1280x720, ground truth 4x4 samples"),
               std::string::npos)
         << r.out;
 
-    // Painter with Phong on the default knot: five interpolations, two lightings and 1x1, 2x2
-    // samples (4x4 left out: not coarser than the 4x4 truth), measured for the window's frame;
+    // Painter with Phong on the default knot: five interpolations, two lightings, 1x1, 2x2
+    // samples and MSAA 2, 4, 8 (4x4 left out: not coarser than the 4x4 truth), measured for the
+    // window's frame;
     // perspective and Phong are the exact forms, so never worse than subdivided or Gouraud.
     const auto state = readState(path("state.txt"));
     ASSERT_EQ(state.count("accuracy_rows"), 1u);
-    EXPECT_EQ(state.at("accuracy_rows"), "9");
+    EXPECT_EQ(state.at("accuracy_rows"), "12");
     EXPECT_EQ(state.at("accuracy_samples"), "4");
     EXPECT_EQ(state.at("accuracy_left_out"), "4x4");
     EXPECT_EQ(state.count("accuracy_samples_4x4"), 0u);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "facet/multisample.hpp"
+
 namespace facet::app {
 
 RenderSettings baseSettings(const Scene& scene) {
@@ -29,6 +31,7 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSett
     base.mode = DrawMode::Solid;  // what the ground truth draws
     base.showNormals = false;
     base.depthLegend = false;
+    base.msaa = 1;  // the samples axis sets it; the other axes are one sample per pixel
     std::vector<AccuracyMethod> methods;
     auto add = [&](const char* axis, std::string name, auto change) {
         RenderSettings s = base;
@@ -57,12 +60,15 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSett
         add("lighting", "gouraud", [](RenderSettings& s) { s.lighting = Lighting::Gouraud; });
         add("lighting", "phong", [](RenderSettings& s) { s.lighting = Lighting::Phong; });
     }
-    // Coverage: one sample per pixel, or the frame supersampled 2×2 and 4×4 (the engine has no
-    // multisampling; supersampling shades every sample too, so it costs about N² frames).
+    // Coverage: one sample per pixel, the frame supersampled 2×2 and 4×4 (every sample shaded,
+    // so it costs about N² frames), or multisampled with 2, 4, 8 samples (coverage and depth
+    // per sample, shaded once per pixel: edges only).
     for (const int n : {1, 2, 4}) {
         add("samples", std::to_string(n) + "x" + std::to_string(n),
             [n](RenderSettings& s) { s.supersample = n; });
     }
+    for (const int n : kMsaaCounts)
+        add("samples", "msaa" + std::to_string(n), [n](RenderSettings& s) { s.msaa = n; });
     return methods;
 }
 

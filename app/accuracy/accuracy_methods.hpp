@@ -29,14 +29,16 @@ RenderSettings baseSettings(const Scene& scene);
 
 /// The methods for a scene, each the base with one axis changed: interpolation affine,
 /// subdivided 8/16/32, perspective; texture nearest/bilinear/trilinear (textured scenes only);
-/// lighting Gouraud/Phong; samples per pixel 1x1, 2x2, 4x4 (supersampling). All share the base's
+/// lighting Gouraud/Phong; samples per pixel 1x1, 2x2, 4x4 (supersampling), msaa2, msaa4, msaa8
+/// (multisampling). All share the base's
 /// ground truth (groundTruthSettings()).
 std::vector<AccuracyMethod> accuracyMethods(const Scene& scene);
 
 /// The methods around given settings (the viewer's: shader, combine, lighting as the user set
 /// them), made Solid without the normals or the legend, like the ground truth: interpolation
 /// always; texture filters with the Texture shader on a textured scene; Gouraud/Phong when the
-/// settings light and the shader shows it; samples 1x1, 2x2, 4x4 always. accuracyMethods(scene)
+/// settings light and the shader shows it; samples 1x1, 2x2, 4x4, msaa2/4/8 always.
+/// accuracyMethods(scene)
 /// is this with baseSettings().
 std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSettings& base);
 

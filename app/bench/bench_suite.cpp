@@ -112,7 +112,14 @@ std::vector<BenchConfig> allConfigs() {
     RenderSettings textured = painter;
     textured.shader = ShaderKind::Texture;  // the texel alone: no lighting, no combine
     textured.filter = TextureFilter::Bilinear;
-    return {{"painter", painter}, {"gouraud", gouraud}, {"phong", phong}, {"textured", textured}};
+    // Gouraud multisampled 4×: the engine's MSAA against llvmpipe's in the same run.
+    RenderSettings msaa4 = gouraud;
+    msaa4.msaa = 4;
+    return {{"painter", painter},
+            {"gouraud", gouraud},
+            {"phong", phong},
+            {"textured", textured},
+            {"gouraud_msaa4", msaa4}};
 }
 
 /// Compiles a filter; an empty pattern matches everything.

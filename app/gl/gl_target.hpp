@@ -1,6 +1,8 @@
 #pragma once
 // The twin's offscreen frame (an FBO with RGBA8 colour and 32-bit float depth) and its readback
 // into the engine's Framebuffer layout, so the two renderers' frames compare and display alike.
+// With multisampling, drawing goes to a second, multisampled FBO that resolve() blits into the
+// first (GL's box-filter resolve of the colour samples).
 
 #include <vector>
 
@@ -14,12 +16,19 @@ namespace facet::gl {
 /// the first row read back is the image's top row, as Framebuffer wants.
 class RenderTarget {
   public:
-    /// (Re)allocates the attachments when the size changed; an Error when the driver's size
-    /// limit is lower or the FBO is incomplete.
-    Status resize(int width, int height);
+    /// (Re)allocates the attachments when the size or sample count changed (`samples` > 1:
+    /// with the multisampled FBO); an Error when the driver's size or sample limit is lower or
+    /// an FBO is incomplete.
+    Status resize(int width, int height, int samples = 1);
 
-    /// Binds the FBO for drawing and reading, with a viewport covering it.
+    /// Binds the FBO to draw into (the multisampled one when there is one), with a viewport
+    /// covering it.
     void bind() const;
+
+    /// Multisampled: blits colour and depth into the single-sample FBO that readColor() and
+    /// readDepth() read (colour averaged per pixel; depth, which GL cannot average, one of the
+    /// samples). Nothing otherwise.
+    void resolve() const;
 
     /// Colour into frame.color (frame must be width × height): packed RGBA8, R in the low
     /// byte, which is GL_RGBA/GL_UNSIGNED_BYTE on a little-endian machine.
@@ -33,8 +42,12 @@ class RenderTarget {
     FramebufferName fbo_;
     Renderbuffer color_;
     Renderbuffer depth_;
+    FramebufferName msFbo_;  // the multisampled FBO, when samples_ > 1
+    Renderbuffer msColor_;
+    Renderbuffer msDepth_;
     int width_ = 0;
     int height_ = 0;
+    int samples_ = 1;
 };
 
 }  // namespace facet::gl

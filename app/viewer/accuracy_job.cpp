@@ -60,7 +60,10 @@ std::vector<app::AccuracyMethod> methodsBelowTruth(const std::vector<app::Accura
     std::vector<app::AccuracyMethod> kept;
     std::string out;
     for (const app::AccuracyMethod& m : methods) {
-        if (std::max(1, m.settings.supersample) < samples) {
+        // Below the truth: fewer samples per pixel, N×N or multisampled.
+        const int perPixel = std::max(1, m.settings.supersample) *
+                             std::max(1, m.settings.supersample) * std::max(1, m.settings.msaa);
+        if (perPixel < samples * samples) {
             kept.push_back(m);
         } else {
             if (!out.empty()) out += ", ";

@@ -145,11 +145,29 @@ void renderPanel(App& app) {
         if (ImGui::Combo("samples", &ss, kSamples, 4)) {
             // A frame over the memory limit is refused before the renderer allocates it.
             const Camera& c = app.model.scene.camera;
-            if (auto problem = frameMemoryProblem(c.width, c.height, ss + 1))
+            if (auto problem = frameMemoryProblem(c.width, c.height, ss + 1, s.msaa))
                 showError(app, "Supersampling", *problem);
             else
                 s.supersample = ss + 1;
         }
+        // Multisampling: coverage and depth per sample, one shading per pixel.
+        static const char* const kMsaa[] = {"off", "2 samples", "4 samples", "8 samples"};
+        int ms = s.msaa >= 8 ? 3 : s.msaa >= 4 ? 2 : s.msaa >= 2 ? 1 : 0;
+        if (ImGui::Combo("MSAA", &ms, kMsaa, 4)) {
+            const int samples = ms == 0 ? 1 : 1 << ms;
+            const Camera& c = app.model.scene.camera;
+            if (auto problem = frameMemoryProblem(c.width, c.height, s.supersample, samples))
+                showError(app, "Multisampling", *problem);
+            else
+                s.msaa = samples;
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "samples (supersampling) shades every sample: N x N the work, and it smooths\n"
+                "edges, textures and highlights alike. MSAA tests coverage and depth at 2, 4 or\n"
+                "8 points per pixel but shades each pixel once: edges only, for much less work.");
+        ImGui::TextDisabled("samples: each sample shaded, N x N work");
+        ImGui::TextDisabled("MSAA: shaded once a pixel, edges only");
         ImGui::EndDisabled();
     }
     {

@@ -51,6 +51,7 @@ std::string stateText(const ViewerModel& m, long long frames) {
     s << "subpixel_bits " << m.settings.subPixelBits << "\n";
     s << "supersample " << m.settings.supersample << "\n";
     s << "view " << toString(m.settings.view) << "\n";
+    s << "msaa " << m.settings.msaa << "\n";
     s << "renderer " << toString(m.rendererChoice) << "\n";
     return s.str();
 }

@@ -18,7 +18,8 @@ inline constexpr int kMaxImageSide = 16384;
 inline constexpr std::uint64_t kMaxFileBytes = std::uint64_t{1} << 30;
 
 /// Largest memory a frame's buffers may take (colour and depth, the supersampled frame and its
-/// resolved copy): 4 GiB. A 16384x16384 frame takes 2 GiB; 16384x16384 at 2x2 takes 10 GiB.
+/// resolved copy, the per-sample buffer of multisampling): 4 GiB. A 16384x16384 frame takes 2 GiB;
+/// 16384x16384 at 2x2 takes 10 GiB.
 inline constexpr std::uint64_t kMaxFrameBytes = std::uint64_t{4} << 30;
 
 /// Largest memory a mesh may take once loaded (its streams, and what a draw derives per vertex
@@ -41,11 +42,12 @@ inline constexpr std::size_t kMaxObjFaceCorners = 65536;
 /// (libjpeg's default progression), libjpeg-turbo suggests a limit of 500 for its own tools.
 inline constexpr int kMaxJpegScans = 100;
 
-/// Bytes of a frame's buffers at `width` x `height` with `supersample` x `supersample` samples.
-std::uint64_t frameBytes(int width, int height, int supersample);
+/// Bytes of a frame's buffers at `width` x `height` with `supersample` x `supersample` samples
+/// and `msaa` multisamples per (supersampled) pixel, whose per-sample buffer comes on top.
+std::uint64_t frameBytes(int width, int height, int supersample, int msaa = 1);
 
 /// Why a frame cannot be rendered within kMaxFrameBytes, or nothing when it can.
-std::optional<std::string> frameMemoryProblem(int width, int height, int supersample);
+std::optional<std::string> frameMemoryProblem(int width, int height, int supersample, int msaa = 1);
 
 /// Why a mesh of `vertices` and `triangles` would exceed kMaxMeshBytes, or nothing.
 std::optional<std::string> meshMemoryProblem(std::uint64_t vertices, std::uint64_t triangles);

@@ -91,8 +91,22 @@ struct Window {
 Image renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
                    const Progress& progress = {});
 
-/// Draws clip-space geometry onto a background-filled image of the given size.
+/// render()'s image of samples, before the resolve (drawSamples()).
+Image renderSamples(const Scene& scene, const RenderSettings& settings);
+
+/// Draws clip-space geometry onto a background-filled image of the given size (multisampled
+/// when settings.msaa > 1 in Solid mode: drawSamples(), then resolveSamples()).
 Image draw(const Input& input, const RenderSettings& settings, int width, int height,
            const Progress& progress = {});
+
+/// The image of samples a multisampled draw resolves (Solid mode, settings.msaa > 1): each
+/// sample a pixel of an image sampleBlock() times the frame (facet/multisample.hpp), before
+/// the normals display; with one sample, the frame itself without it.
+Image drawSamples(const Input& input, const RenderSettings& settings, int width, int height,
+                  const Progress& progress = {});
+
+/// The box-filter resolve of an image of `msaa` samples per pixel: per channel the rounded
+/// mean of the samples' 8-bit values (rule 9), depth the nearest, ambiguous if any sample is.
+Image resolveSamples(const Image& samples, int msaa);
 
 }  // namespace facet::reference

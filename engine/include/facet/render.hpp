@@ -85,10 +85,16 @@ class Renderer {
     /// depth-to-colour pass runs over the whole frame afterwards.
     RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
 
-    /// Counts, per pixel, how many triangles cover its centre (fill-rule tests, overdraw views).
-    /// `counts` is resized to width*height and zeroed first. Honours culling and clipping.
+    /// Counts, per pixel, how many triangles cover its centre (fill-rule tests, overdraw views);
+    /// with settings.msaa > 1, per sample, in the per-sample buffer's layout (samples()).
+    /// `counts` is resized to width*height*samples and zeroed first. Honours culling and clipping.
     void countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
                        int height, std::vector<std::uint16_t>& counts);
+
+    /// The per-sample buffer of the last multisampled draw, before the resolve: sample k of
+    /// pixel (x, y) at (x·b.x + k mod b.x, y·b.y + k div b.x), b = sampleBlock(msaa)
+    /// (facet/multisample.hpp); colours already mapped for the Depth shader. Empty before one.
+    const Framebuffer& samples() const;
 
   private:
     struct Impl;  // the scratch buffers and caches kept between frames (pipeline/renderer.cpp)

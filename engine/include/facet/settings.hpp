@@ -65,6 +65,11 @@ struct RenderSettings {
     /// N×N block averaged (supersampling); Solid mode only, lines and points stay one sample.
     int supersample = 1;
     DebugView view = DebugView::None;  ///< a debug view instead of the shaded image
+    /// Samples per pixel of multisampling: 1 (off), 2, 4 or 8 (others normalised by
+    /// msaaSamples()). Coverage and depth per sample at the standard positions, shading once per
+    /// pixel, a box-filter resolve (README, "Multisampling"); Solid mode only, lines and points
+    /// stay one sample. Combines with supersample (each supersampled pixel multisampled).
+    int msaa = 1;
 
     /// Every field equal (the viewer's "did anything change" and "same method" checks).
     bool operator==(const RenderSettings&) const = default;

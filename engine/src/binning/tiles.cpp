@@ -117,7 +117,7 @@ std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int hei
 
 void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
                         int height, RasterizeFn rasterize, void* context, int threads,
-                        int subPixelBits, RenderStats& stats) {
+                        int subPixelBits, RenderStats& stats, int sampleReach) {
     const std::size_t triangles = in.indices.size() / 3;
     if (width <= 0 || height <= 0 || triangles == 0) return;
     const int tilesX = (width + kTileSize - 1) / kTileSize;
@@ -154,7 +154,7 @@ void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool c
                 const std::size_t first = b0 + (b1 - b0) * static_cast<std::size_t>(s) / n;
                 const std::size_t end = b0 + (b1 - b0) * static_cast<std::size_t>(s + 1) / n;
                 drawTriangles(in, layout, cull, width, height, first, end, &binTriangle, &slice,
-                              slice.stats, subPixelBits);
+                              slice.stats, subPixelBits, sampleReach);
             }
 #pragma omp for schedule(dynamic, 1)
             for (int tile = 0; tile < tiles; ++tile)

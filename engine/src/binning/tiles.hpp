@@ -27,10 +27,11 @@ class TileRenderer {
   public:
     /// Draws triangles like drawTriangles() over the whole draw, rasterizing with `rasterize`
     /// (whose `context` must be safe to share between threads for disjoint tiles), on a grid of
-    /// 1/2^subPixelBits px. Adds the front end's counters and the fragments to `stats`.
+    /// 1/2^subPixelBits px, boxes reaching `sampleReach` grid units past pixel centres
+    /// (multisampling). Adds the front end's counters and the fragments to `stats`.
     void draw(const DrawInput& in, const VaryingLayout& layout, bool cull, int width, int height,
               RasterizeFn rasterize, void* context, int threads, int subPixelBits,
-              RenderStats& stats);
+              RenderStats& stats, int sampleReach = 0);
 
   private:
     /// What one thread's slice of a batch produced: packed records, and per tile their offsets.

@@ -79,9 +79,11 @@ inline std::int64_t floorDivSub(std::int64_t v) {
 
 /// Sets up coverage of the snapped triangle (x[i], y[i]) (already in grid units) within `clip`.
 /// Returns the facing; only Front/Back triangles get a usable `out`. Back means clockwise on a
-/// y-up screen (positive area in y-down pixel space), matching the reference path.
+/// y-up screen (positive area in y-down pixel space), matching the reference path. `reach`
+/// (grid units) widens the box to every pixel with a point within `reach` of its centre inside
+/// the triangle's bounds: multisampling's samples lie off the centre (0: centres only).
 inline Facing setupCoverage(const std::int64_t (&xs)[3], const std::int64_t (&ys)[3],
-                            const PixelRect& clip, CoverageSetup& out) {
+                            const PixelRect& clip, CoverageSetup& out, std::int64_t reach = 0) {
     std::int64_t x[3] = {xs[0], xs[1], xs[2]};
     std::int64_t y[3] = {ys[0], ys[1], ys[2]};
     std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
@@ -99,11 +101,11 @@ inline Facing setupCoverage(const std::int64_t (&xs)[3], const std::int64_t (&ys
     const std::int64_t half = kSubPixel / 2;
     // Pixel i's centre is at i*256 + 128: first centre >= min, last centre <= max.
     const std::int64_t bx0 =
-        std::max<std::int64_t>(clip.x0, floorDivSub(minX - half + kSubPixel - 1));
-    const std::int64_t bx1 = std::min<std::int64_t>(clip.x1, floorDivSub(maxX - half));
+        std::max<std::int64_t>(clip.x0, floorDivSub(minX - reach - half + kSubPixel - 1));
+    const std::int64_t bx1 = std::min<std::int64_t>(clip.x1, floorDivSub(maxX + reach - half));
     const std::int64_t by0 =
-        std::max<std::int64_t>(clip.y0, floorDivSub(minY - half + kSubPixel - 1));
-    const std::int64_t by1 = std::min<std::int64_t>(clip.y1, floorDivSub(maxY - half));
+        std::max<std::int64_t>(clip.y0, floorDivSub(minY - reach - half + kSubPixel - 1));
+    const std::int64_t by1 = std::min<std::int64_t>(clip.y1, floorDivSub(maxY + reach - half));
     out.box = {static_cast<int>(bx0), static_cast<int>(by0), static_cast<int>(bx1),
                static_cast<int>(by1)};
     if (out.box.empty()) return facing;

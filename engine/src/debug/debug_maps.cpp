@@ -50,6 +50,7 @@ RenderSettings debugViewBase(const RenderSettings& settings) {
     base.view = DebugView::None;
     base.mode = DrawMode::Solid;
     base.supersample = 1;
+    base.msaa = 1;  // the views count one sample per pixel
     base.showNormals = false;
     base.depthLegend = false;
     if (settings.view == DebugView::TextureLod) {

@@ -33,6 +33,7 @@ RenderSettings groundTruthSettings(const RenderSettings& settings) {
     s.filter = TextureFilter::Bilinear;
     s.showNormals = false;
     s.depthLegend = false;
+    s.msaa = 1;  // its own N×N samples per pixel already
     return s;
 }
 

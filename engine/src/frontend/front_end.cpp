@@ -69,10 +69,10 @@ bool project(const glm::vec4 (&pos)[3], const GuardBand& guard, glm::dvec2 (&s)[
 /// Stage 3, snap: the triangle a, b, c on the sub-pixel grid, its edges and pixel box set up
 /// for coverage; the facing it returns is what the cull stage decides on.
 Facing snap(const SnapGrid& grid, const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c,
-            const PixelRect& screen, CoverageSetup& setup) {
+            const PixelRect& screen, CoverageSetup& setup, std::int64_t reach) {
     const std::int64_t xs[3] = {grid(a.x), grid(b.x), grid(c.x)};
     const std::int64_t ys[3] = {grid(a.y), grid(b.y), grid(c.y)};
-    return setupCoverage(xs, ys, screen, setup);
+    return setupCoverage(xs, ys, screen, setup, reach);
 }
 
 /// The pixel the planes are relative to: the triangle's top-left, clamped to the image.
@@ -87,7 +87,7 @@ void planeBase(const glm::dvec2 (&s)[3], float W, float H, int& baseX, int& base
 
 std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
                           int height, std::size_t first, std::size_t end, RasterizeFn emit,
-                          void* context, RenderStats& stats, int subPixelBits) {
+                          void* context, RenderStats& stats, int subPixelBits, int sampleReach) {
     const SnapGrid grid = SnapGrid::ofBits(subPixelBits);
     const PixelRect screen{0, 0, width - 1, height - 1};
     const GuardBand guard{{-kGuardBand, -kGuardBand}, {width + kGuardBand, height + kGuardBand}};
@@ -121,7 +121,7 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
                 // since most triangles of a dense mesh cover none and the planes (and the
                 // varyings they need) cost more than the coverage test.
                 CoverageSetup setup;
-                const Facing facing = snap(grid, s[0], s[1], s[2], screen, setup);
+                const Facing facing = snap(grid, s[0], s[1], s[2], screen, setup, sampleReach);
                 if (facing == Facing::Degenerate) return;
                 if (cull && facing == Facing::Back) {
                     culled = true;
@@ -144,8 +144,8 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
             const ScreenPolygon cover = clipToRect(s, guard.lo, guard.hi);
             for (std::size_t j = 1; j + 1 < cover.size; ++j) {
                 CoverageSetup setup;
-                if (snap(grid, cover.v[0], cover.v[j], cover.v[j + 1], screen, setup) ==
-                    Facing::Degenerate)
+                if (snap(grid, cover.v[0], cover.v[j], cover.v[j + 1], screen, setup,
+                         sampleReach) == Facing::Degenerate)
                     continue;
                 drawn = true;
                 if (!setup.box.empty()) fragments += emit(context, setup, planes);

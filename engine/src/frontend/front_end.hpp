@@ -27,9 +27,11 @@ using RasterizeFn = std::size_t (*)(void* context, const CoverageSetup& setup,
 
 /// Runs the front end over triangles [first, end) of the draw and calls `emit` for each part
 /// that covers pixels, with the planes of the (whole, unclipped by the guard band) triangle.
-/// Returns the sum of what `emit` returned. Coverage uses a grid of 1/2^subPixelBits px.
+/// Returns the sum of what `emit` returned. Coverage uses a grid of 1/2^subPixelBits px; boxes
+/// reach `sampleReach` grid units past the pixel centres (multisampling, setupCoverage()).
 std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
                           int height, std::size_t first, std::size_t end, RasterizeFn emit,
-                          void* context, RenderStats& stats, int subPixelBits = kSubPixelBits);
+                          void* context, RenderStats& stats, int subPixelBits = kSubPixelBits,
+                          int sampleReach = 0);
 
 }  // namespace facet::detail

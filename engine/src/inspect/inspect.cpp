@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "facet/camera.hpp"
+#include "facet/multisample.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "passes/frame_passes.hpp"
@@ -251,6 +252,14 @@ PixelHistory inspectPixel(const Scene& scene, const RenderSettings& settings, in
     }
     if (settings.mode != DrawMode::Solid) {
         h.notes.emplace_back("only Solid mode is inspected: lines and points are not listed");
+        return h;
+    }
+    if (msaaSamples(settings.msaa) > 1) {
+        // Its coverage is per sample, its shading point can move to the centroid: a history
+        // of the pixel centre alone would not explain the resolved colour.
+        h.notes.emplace_back(
+            "multisampled frames are not inspected: inspect with --msaa 1 (the same triangles "
+            "and shading at the pixel centre)");
         return h;
     }
     if (settings.showNormals || settings.depthLegend)

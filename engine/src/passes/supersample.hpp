@@ -7,6 +7,7 @@
 // The principal point is half the image (conventions §4), so big pixel (I + ½, J + ½) lands at
 // ((I + ½)/n, (J + ½)/n) in the frame's pixels: an even n×n grid of sample centres in each pixel.
 
+#include <bit>
 #include <cstdint>
 
 #include "facet/framebuffer.hpp"
@@ -26,14 +27,25 @@ struct RgbaSum {
     }
     /// The mean of `count` pixels, each channel rounded to nearest, packed.
     std::uint32_t mean(std::uint32_t count) const {
+        // Every block but 3×3 has a power-of-two count: a shift, not a division per channel.
+        const int shift = std::has_single_bit(count) ? std::countr_zero(count) : -1;
         std::uint32_t packed = 0;
-        for (int k = 0; k < 4; ++k) packed |= ((sum[k] + count / 2) / count) << (8 * k);
+        for (int k = 0; k < 4; ++k) {
+            const std::uint32_t v = sum[k] + count / 2;
+            packed |= (shift >= 0 ? v >> shift : v / count) << (8 * k);
+        }
         return packed;
     }
 };
 
-/// Averages each n×n block of `big` into one pixel of `out` (resized to big / n): each channel
-/// the rounded mean (alpha too), depth the nearest of the block (empty only if all are).
-void resolveSupersampled(const Framebuffer& big, int n, Framebuffer& out, int threads);
+/// Averages each bx×by block of `big` into one pixel of `out` (resized to big / block): each
+/// channel the rounded mean of the 8-bit values (alpha too), depth the nearest of the block
+/// (empty only if all are). The box filter of supersampling (n×n blocks) and of multisampling's
+/// resolve (SampleBlock, facet/multisample.hpp).
+void resolveSupersampled(const Framebuffer& big, int bx, int by, Framebuffer& out, int threads);
+
+/// Multisampling's start: `samples` resized to `frame` times the block and every sample set to
+/// its pixel's colour and depth, so a draw continues what is in the frame.
+void expandToSamples(const Framebuffer& frame, int bx, int by, Framebuffer& samples, int threads);
 
 }  // namespace facet::detail

@@ -15,15 +15,18 @@
 #include "facet/camera.hpp"
 #include "facet/debug_view.hpp"
 #include "facet/legend.hpp"
+#include "facet/multisample.hpp"
 #include "facet/render.hpp"
 #include "lines/lines_points.hpp"
 #include "passes/frame_passes.hpp"
 #include "passes/normals_overlay.hpp"
 #include "passes/supersample.hpp"
+#include "pipeline/msaa_draw.hpp"
 #include "pipeline/span_targets.hpp"
 #include "pipeline/variants.hpp"
 #include "pipeline/vertex_stage.hpp"
 #include "scene/fingerprint.hpp"
+#include "shading/msaa_loop.hpp"
 #include "shading/scalar_loop.hpp"
 
 namespace facet {
@@ -40,6 +43,7 @@ struct Renderer::Impl {
     NormalsOverlay normalsOverlay;
     TileRenderer tiles;                  // bins kept between frames
     Framebuffer supersampled;            // the N×N-size image of a supersampled frame
+    Framebuffer samples;                 // the per-sample buffer of a multisampled draw
     DrawProbe probe;                     // the debug views' instrumented draw
     Framebuffer affine;                  // the interpolation-error view's second frame
     std::vector<std::uint32_t> binLoad;  // the bin-load view's counts per tile
@@ -77,6 +81,31 @@ struct CoverageCounts {
     std::uint16_t* counts;
     int width;
 };
+
+/// Counts covered samples instead (multisampling): `counts` in the per-sample buffer's layout.
+struct SampleCounts {
+    std::uint16_t* counts;
+    int width;  ///< of the per-sample buffer
+    SamplePattern pattern;
+};
+
+std::size_t countSamples(void* context, const CoverageSetup& setup, const Planes&) {
+    const SampleCounts& c = *static_cast<const SampleCounts*>(context);
+    const SamplePattern& sp = c.pattern;
+    std::size_t covered = 0;
+    forEachCoveredSamples(setup, sp, [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
+        ++covered;
+        const std::size_t first =
+            static_cast<std::size_t>(y * sp.block.y) * static_cast<std::size_t>(c.width) +
+            static_cast<std::size_t>(x * sp.block.x);
+        for (int j = 0; j < sp.count; ++j) {
+            if (!(mask & (1u << j))) continue;
+            std::uint16_t& n = c.counts[first + sp.at(j, c.width)];
+            if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+        }
+    });
+    return covered;
+}
 
 std::size_t countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
     const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
@@ -128,34 +157,61 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
     const int threads = resolveThreads(settings.threads);
     const RasterizeFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
-    dispatch(key, [&](auto variant) {
-        using V = decltype(variant);
-        switch (settings.mode) {
-            case DrawMode::Solid: {
-                RasterContext ctx{&frame, &constants, subdivision, spans};
-                impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
-                                  frame.height, &rasterizeTriangle<V>, &ctx, threads,
-                                  clampedSubPixelBits(settings), stats);
-                break;
+    // Multisampling draws triangles into the per-sample buffer, which starts as the frame's
+    // pixels and is resolved back into it; lines and points stay one sample (README).
+    const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
+    const SampleBlock block = sampleBlock(samples);
+    Framebuffer& target = samples > 1 ? impl_->samples : frame;
+    if (samples > 1) {  // Solid mode: triangles only
+        expandToSamples(frame, block.x, block.y, impl_->samples, threads);
+        drawMsaaTriangles(impl_->tiles, key, input, settings, constants, impl_->samples, samples,
+                          frame.width, frame.height, subdivision, threads,
+                          clampedSubPixelBits(settings), stats);
+    } else {
+        dispatch(key, [&](auto variant) {
+            using V = decltype(variant);
+            switch (settings.mode) {
+                case DrawMode::Solid: {
+                    RasterContext ctx{&frame, &constants, subdivision, spans};
+                    impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
+                                      frame.height, &rasterizeTriangle<V>, &ctx, threads,
+                                      clampedSubPixelBits(settings), stats);
+                    break;
+                }
+                case DrawMode::Wireframe:
+                    impl_->updateEdges(input.indices);
+                    drawLines<V>(input, impl_->edges, frame, constants, stats);
+                    break;
+                case DrawMode::Vertices:
+                    drawPoints<V>(input, settings.pointSize, frame, constants, stats);
+                    break;
             }
-            case DrawMode::Wireframe:
-                impl_->updateEdges(input.indices);
-                drawLines<V>(input, impl_->edges, frame, constants, stats);
-                break;
-            case DrawMode::Vertices:
-                drawPoints<V>(input, settings.pointSize, frame, constants, stats);
-                break;
-        }
-    });
-    if (settings.shader == ShaderKind::Depth) resolveDepthColors(frame, stats, threads);
+        });
+    }
+    if (settings.shader == ShaderKind::Depth) resolveDepthColors(target, stats, threads);
+    if (samples > 1) resolveSupersampled(impl_->samples, block.x, block.y, frame, threads);
     return stats;
+}
+
+const Framebuffer& Renderer::samples() const {
+    return impl_->samples;
 }
 
 void Renderer::countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
                              int height, std::vector<std::uint16_t>& counts) {
-    counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+    const int samples = msaaSamples(settings.msaa);
+    counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                      static_cast<std::size_t>(samples),
+                  0);
     if (width <= 0 || height <= 0) return;
     RenderStats stats;
+    if (samples > 1) {
+        SampleCounts ctx{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)};
+        impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height,
+                          &countSamples, &ctx, resolveThreads(settings.threads),
+                          clampedSubPixelBits(settings), stats, SamplePattern::kReach);
+        return;
+    }
     CoverageCounts ctx{counts.data(), width};
     impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
                       &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
@@ -181,7 +237,7 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     RenderStats stats = impl_->renderView(
         *this, scene, resizedCamera(cam, cam.width * n, cam.height * n), big, impl_->supersampled);
     Clock::time_point t = Clock::now();
-    resolveSupersampled(impl_->supersampled, n, frame, resolveThreads(settings.threads));
+    resolveSupersampled(impl_->supersampled, n, n, frame, resolveThreads(settings.threads));
     if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
         drawDepthLegend(frame, stats.depthNear, stats.depthFar);
     stats.postMs += msSince(t);

@@ -23,6 +23,18 @@
 //     vertices computed from the inside vertex), fanned (v0, vk, vk+1), then rasterized with the
 //     top-left rule at pixel centres; depth is always 1/q, perspective-correct (q = Σ λ_i/w_i),
 //     the varyings use the weights of rule 11.
+//     Multisampling (settings.msaa 2, 4 or 8, Solid only): coverage (top-left rule) and depth
+//     (1/q, the LESS test) at each standard sample position (facet/multisample.hpp) instead of
+//     the centre, into an image of samples (SampleBlock layout); the fragment of a pixel is
+//     shaded once, at the pixel centre when the centre is inside by the same rule, else at the
+//     centroid (mean) of its covered samples, with the weights of rule 11 there (Subdivided:
+//     Perspective at a centroid), and that colour goes to every covered sample passing its
+//     depth test. The Depth shader maps the samples' depths (rule 5); then each pixel is the
+//     box-filter resolve of its samples in 8 bits: per channel the rounded mean of the samples'
+//     rule-9 bytes, depth the nearest. The normals display (rule 14) is drawn on the resolved
+//     image, one sample per pixel. Rule 8(a) applies per sample, and to the centre's inside
+//     test: one ambiguous point flags all the pixel's samples, since it may move the
+//     shading point; a resolved pixel is ambiguous when any of its samples is.
 //  5. Shaders: Simple writes colour only (last wins); Painter tests LESS and writes colour and
 //     depth; Depth is Painter, then maps every drawn pixel's depth to viridis over [dmin, dmax];
 //     Texture is Painter with the colour of rule 13.
@@ -88,6 +100,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "facet/framebuffer.hpp"
+#include "facet/multisample.hpp"
 #include "facet/texture.hpp"
 #include "reference/geometry.hpp"
 #include "reference/samplers.hpp"
@@ -168,32 +182,81 @@ std::pair<int, int> pixelSpan(double lo, double hi, int size) {
     return {static_cast<int>(first), static_cast<int>(last)};
 }
 
-// Rule 8(a): the snapped edges of the fast path lie within 1/256 px of ours, so centres that
-// close to an edge (and not clearly outside) may be covered by this triangle or its neighbour.
-void markEdgeAmbiguity(Image& img, const std::array<glm::dvec2, 3>& s) {
+// Where one pixel's samples are: one at the centre, or multisampling's standard positions,
+// stored in the image of samples as a block (facet/multisample.hpp).
+struct SampleGrid {
+    int count = 1;
+    SampleBlock block;
+    std::array<glm::dvec2, 8> offset{};  ///< from the pixel centre, in px
+
+    static SampleGrid of(int samples) {
+        SampleGrid g;
+        g.count = msaaSamples(samples);
+        g.block = sampleBlock(g.count);
+        const std::span<const SampleOffset> pos = samplePositions(g.count);
+        for (std::size_t k = 0; k < pos.size(); ++k)
+            g.offset[k] = {pos[k].x / 16.0, pos[k].y / 16.0};
+        return g;
+    }
+    // How far a sample may lie from its pixel's centre.
+    double reach() const { return count > 1 ? 0.5 : 0.0; }
+    // Sample k of pixel (x, y) in the image of samples.
+    std::int64_t sx(int x, int k) const { return std::int64_t{x} * block.x + k % block.x; }
+    std::int64_t sy(int y, int k) const { return std::int64_t{y} * block.y + k / block.x; }
+};
+
+// Rule 8(a): the snapped edges of the fast path lie within 1/256 px of ours, so sample points
+// that close to an edge (and not clearly outside) may be covered by this triangle or its
+// neighbour. With several samples the shading point (centre or centroid) hangs on the centre's
+// and every sample's inside test, so one ambiguous point flags all the pixel's samples.
+void markEdgeAmbiguity(Image& img, const std::array<glm::dvec2, 3>& s, const SampleGrid& grid,
+                       int width, int height) {
     std::array<double, 3> len{};
     for (std::size_t k = 0; k < 3; ++k) len[k] = glm::length(s[(k + 1) % 3] - s[k]);
-    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}) - 1.0,
-                                    std::max({s[0].x, s[1].x, s[2].x}) + 1.0, img.width);
-    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}) - 1.0,
-                                    std::max({s[0].y, s[1].y, s[2].y}) + 1.0, img.height);
+    const double r = 1.0 + grid.reach();
+    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}) - r,
+                                    std::max({s[0].x, s[1].x, s[2].x}) + r, width);
+    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}) - r,
+                                    std::max({s[0].y, s[1].y, s[2].y}) + r, height);
+    auto ambiguousAt = [&](const glm::dvec2& p) {
+        double nearest = kInf;
+        bool inGrown = true;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double dist = edgeFunction(s[k], s[(k + 1) % 3], p) / len[k];
+            inGrown = inGrown && dist >= -kSnap;
+            nearest = std::min(nearest, std::abs(dist));
+        }
+        return inGrown && nearest <= kSnap;
+    };
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
-            const glm::dvec2 p{x + 0.5, y + 0.5};
-            double nearest = kInf;
-            bool inGrown = true;
-            for (std::size_t k = 0; k < 3; ++k) {
-                const double dist = edgeFunction(s[k], s[(k + 1) % 3], p) / len[k];
-                inGrown = inGrown && dist >= -kSnap;
-                nearest = std::min(nearest, std::abs(dist));
+            const glm::dvec2 c{x + 0.5, y + 0.5};
+            if (grid.count == 1) {
+                if (ambiguousAt(c)) img.ambiguous[pixelIndex(img, x, y)] = 1;
+                continue;
             }
-            if (inGrown && nearest <= kSnap) img.ambiguous[pixelIndex(img, x, y)] = 1;
+            // The shading point depends on the centre's and every sample's inside test, so
+            // one ambiguous decision may change the colour of all the pixel's samples.
+            bool any = ambiguousAt(c);
+            for (int k = 0; k < grid.count && !any; ++k)
+                any = ambiguousAt(c + grid.offset[static_cast<std::size_t>(k)]);
+            if (!any) continue;
+            for (int k = 0; k < grid.count; ++k)
+                img.ambiguous[pixelIndex(img, grid.sx(x, k), grid.sy(y, k))] = 1;
         }
     }
 }
 
-// Rule 4 for one fan triangle in clip space; each finished row counts towards the progress.
-void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v, Tracker& progress) {
+// Rule 11 at a point off the pixel grid (a multisampled pixel's centroid): Affine the
+// barycentrics there, Perspective and Subdivided the perspective-correct weights.
+std::array<double, 3> weightsAt(const ScreenTriangle& tri, Interp interp, const glm::dvec2& p) {
+    return interp == Interp::Affine ? tri.barycentric(p) : tri.perspective(p);
+}
+
+// Rule 4 for one fan triangle in clip space into `img`, an image of the grid's samples of a
+// width × height frame; each finished row counts towards the progress.
+void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v,
+                       const SampleGrid& grid, int width, int height, Tracker& progress) {
     const RenderSettings& settings = pass.settings;
     std::array<glm::dvec2, 3> s{};
     for (std::size_t i = 0; i < 3; ++i) s[i] = glm::dvec2(v[i].clip) / v[i].clip.w;
@@ -206,36 +269,59 @@ void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v, Tr
         std::swap(s[1], s[2]);
         area = -area;
     }
-    markEdgeAmbiguity(img, s);
+    markEdgeAmbiguity(img, s, grid, width, height);
     const ScreenTriangle tri{s, {v[0].clip.w, v[1].clip.w, v[2].clip.w}, area};
     const bool withLod = detail::needsLod(settings, pass.input);
 
     const std::array<bool, 3> topLeft{isTopLeft(s[1], s[2]), isTopLeft(s[2], s[0]),
                                       isTopLeft(s[0], s[1])};
-    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}),
-                                    std::max({s[0].x, s[1].x, s[2].x}), img.width);
-    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}),
-                                    std::max({s[0].y, s[1].y, s[2].y}), img.height);
+    auto inside = [&](const glm::dvec2& p) {
+        // e[i] is the edge opposite vertex i, so e[i] / area is vertex i's barycentric.
+        const std::array<double, 3> e{edgeFunction(s[1], s[2], p), edgeFunction(s[2], s[0], p),
+                                      edgeFunction(s[0], s[1], p)};
+        bool covered = true;
+        for (std::size_t k = 0; k < 3; ++k) {
+            covered = covered && (e[k] > 0.0 || (e[k] == 0.0 && topLeft[k]));
+        }
+        return covered;
+    };
+    const double r = grid.reach();
+    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}) - r,
+                                    std::max({s[0].x, s[1].x, s[2].x}) + r, width);
+    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}) - r,
+                                    std::max({s[0].y, s[1].y, s[2].y}) + r, height);
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
-            const glm::dvec2 p{x + 0.5, y + 0.5};
-            // e[i] is the edge opposite vertex i, so e[i] / area is vertex i's barycentric.
-            const std::array<double, 3> e{edgeFunction(s[1], s[2], p), edgeFunction(s[2], s[0], p),
-                                          edgeFunction(s[0], s[1], p)};
-            bool covered = true;
-            for (std::size_t k = 0; k < 3; ++k) {
-                covered = covered && (e[k] > 0.0 || (e[k] == 0.0 && topLeft[k]));
+            const glm::dvec2 c{x + 0.5, y + 0.5};
+            unsigned covered = 0;
+            glm::dvec2 sum{0.0};
+            int n = 0;
+            for (int k = 0; k < grid.count; ++k) {
+                if (!inside(c + grid.offset[static_cast<std::size_t>(k)])) continue;
+                covered |= 1u << k;
+                sum += grid.offset[static_cast<std::size_t>(k)];
+                ++n;
             }
-            if (!covered) continue;
+            if (covered == 0) continue;
 
-            const double depth = 1.0 / tri.inverseW(p);  // always perspective-correct
-            const std::array<double, 3> weights = detail::triangleWeights(tri, settings, x, y);
+            // One shading per pixel: at the centre, or the covered samples' centroid.
+            const bool atCentre = grid.count == 1 || inside(c);
+            const glm::dvec2 p = atCentre ? c : c + sum / static_cast<double>(n);
+            const std::array<double, 3> weights = atCentre
+                                                      ? detail::triangleWeights(tri, settings, x, y)
+                                                      : weightsAt(tri, settings.interp, p);
             double lod = 0.0;
             if (withLod) {
                 const auto [dx, dy] = detail::uvDerivatives(tri, v, settings.interp, p);
                 lod = reference::mipLevel(*pass.input.texture, dx, dy);
             }
-            fragment(img, pass, x, y, depth, v, weights, lod);
+            for (int k = 0; k < grid.count; ++k) {
+                if (!(covered & (1u << k))) continue;
+                // Depth is always perspective-correct, at the sample.
+                const double depth =
+                    1.0 / tri.inverseW(c + grid.offset[static_cast<std::size_t>(k)]);
+                fragment(img, pass, grid.sx(x, k), grid.sy(y, k), depth, v, weights, lod);
+            }
         }
         if (!progress.add(x1 - x0 + 1)) return;
     }
@@ -243,24 +329,23 @@ void rasterizeTriangle(Image& img, const Pass& pass, std::array<Vertex, 3> v, Tr
 
 // The pixel work of one triangle for the progress: its bounding box in the image (plus one, for
 // the set-up of triangles off screen), the whole image when the near plane clips it.
-double triangleWork(const Image& img, const std::array<glm::dvec4, 3>& clip, double nearPlane) {
+double triangleWork(int width, int height, const std::array<glm::dvec4, 3>& clip,
+                    double nearPlane) {
     std::array<glm::dvec2, 3> s{};
     for (std::size_t i = 0; i < 3; ++i) {
-        if (!(clip[i].w >= nearPlane)) return static_cast<double>(img.width) * img.height + 1.0;
+        if (!(clip[i].w >= nearPlane)) return static_cast<double>(width) * height + 1.0;
         s[i] = glm::dvec2(clip[i]) / clip[i].w;
     }
-    const auto [x0, x1] = pixelSpan(std::min({s[0].x, s[1].x, s[2].x}),
-                                    std::max({s[0].x, s[1].x, s[2].x}), img.width);
-    const auto [y0, y1] = pixelSpan(std::min({s[0].y, s[1].y, s[2].y}),
-                                    std::max({s[0].y, s[1].y, s[2].y}), img.height);
+    const auto [x0, x1] =
+        pixelSpan(std::min({s[0].x, s[1].x, s[2].x}), std::max({s[0].x, s[1].x, s[2].x}), width);
+    const auto [y0, y1] =
+        pixelSpan(std::min({s[0].y, s[1].y, s[2].y}), std::max({s[0].y, s[1].y, s[2].y}), height);
     if (x0 > x1 || y0 > y1) return 1.0;
     return static_cast<double>(x1 - x0 + 1) * (y1 - y0 + 1) + 1.0;
 }
 
-}  // namespace
-
-Image draw(const Input& input, const RenderSettings& settings, int width, int height,
-           const Progress& progress) {
+// Rule 2: the background and empty depth, at `width` × `height` (an image of samples too).
+Image blankImage(const RenderSettings& settings, int width, int height) {
     Image img;
     img.width = std::max(width, 0);
     img.height = std::max(height, 0);
@@ -271,7 +356,13 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
     img.color.assign(pixels, background);
     img.depth.assign(pixels, kInf);
     img.ambiguous.assign(pixels, 0);
+    return img;
+}
 
+// Rules 4, 6 and 7 into `img`: the frame of width × height itself, or with multisampling its
+// image of samples; marks `img` cancelled when the progress stops it.
+void drawPrimitives(Image& img, const Input& input, const RenderSettings& settings,
+                    const SampleGrid& grid, int width, int height, const Progress& progress) {
     const std::size_t vertexCount = input.clip.size();
     auto vertex = [&](std::uint32_t i) {  // rule 10
         Vertex v;
@@ -296,7 +387,7 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
             const std::uint32_t i1 = input.indices[t + 1];
             const std::uint32_t i2 = input.indices[t + 2];
             if (!valid(i0) || !valid(i1) || !valid(i2)) continue;
-            work += triangleWork(img, {input.clip[i0], input.clip[i1], input.clip[i2]},
+            work += triangleWork(width, height, {input.clip[i0], input.clip[i1], input.clip[i2]},
                                  input.nearPlane);
         }
     }
@@ -316,7 +407,8 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
                 const Polygon poly =
                     clipNear({vertex(i0), vertex(i1), vertex(i2)}, input.nearPlane);
                 for (std::size_t k = 1; k + 1 < poly.count; ++k) {
-                    rasterizeTriangle(img, pass, {poly.v[0], poly.v[k], poly.v[k + 1]}, tracker);
+                    rasterizeTriangle(img, pass, {poly.v[0], poly.v[k], poly.v[k + 1]}, grid, width,
+                                      height, tracker);
                 }
                 tracker.add(1.0);
             }
@@ -351,12 +443,59 @@ Image draw(const Input& input, const RenderSettings& settings, int width, int he
             break;
     }
     if (tracker.active()) tracker.finish();
-    if (tracker.stopped()) {
-        img.cancelled = true;
-        return img;
-    }
+    img.cancelled = tracker.stopped();
+}
 
-    if (settings.shader == ShaderKind::Depth) mapDepthToColor(img);
+}  // namespace
+
+Image resolveSamples(const Image& samples, int msaa) {
+    const SampleBlock b = sampleBlock(msaa);
+    Image img;
+    img.width = samples.width / b.x;
+    img.height = samples.height / b.y;
+    img.cancelled = samples.cancelled;
+    const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
+    img.color.assign(pixels, glm::dvec3(0.0));
+    img.depth.assign(pixels, kInf);
+    img.ambiguous.assign(pixels, 0);
+    const std::vector<std::uint32_t> bytes = samples.toRgba();  // rule 9 per sample
+    const double count = static_cast<double>(b.x * b.y);
+    for (int y = 0; y < img.height; ++y) {
+        for (int x = 0; x < img.width; ++x) {
+            glm::dvec3 sum{0.0};
+            const std::size_t i = pixelIndex(img, x, y);
+            for (int sy = 0; sy < b.y; ++sy) {
+                for (int sx = 0; sx < b.x; ++sx) {
+                    const std::size_t j =
+                        pixelIndex(samples, std::int64_t{x} * b.x + sx, std::int64_t{y} * b.y + sy);
+                    for (int c = 0; c < 3; ++c) sum[c] += (bytes[j] >> (8 * c)) & 0xFFu;
+                    img.depth[i] = std::min(img.depth[i], samples.depth[j]);
+                    if (samples.ambiguous[j] != 0) img.ambiguous[i] = 1;
+                }
+            }
+            // The rounded mean of the bytes, as a value rule 9 turns back into that byte.
+            for (int c = 0; c < 3; ++c) img.color[i][c] = std::floor(sum[c] / count + 0.5) / 255.0;
+        }
+    }
+    return img;
+}
+
+Image drawSamples(const Input& input, const RenderSettings& settings, int width, int height,
+                  const Progress& progress) {
+    const SampleGrid grid = SampleGrid::of(settings.mode == DrawMode::Solid ? settings.msaa : 1);
+    Image img =
+        blankImage(settings, std::max(width, 0) * grid.block.x, std::max(height, 0) * grid.block.y);
+    drawPrimitives(img, input, settings, grid, std::max(width, 0), std::max(height, 0), progress);
+    if (!img.cancelled && settings.shader == ShaderKind::Depth) mapDepthToColor(img);
+    return img;
+}
+
+Image draw(const Input& input, const RenderSettings& settings, int width, int height,
+           const Progress& progress) {
+    const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
+    Image img = drawSamples(input, settings, width, height, progress);
+    if (samples > 1) img = resolveSamples(img, samples);
+    if (img.cancelled) return img;
 
     // Rule 14: the normals display, over the finished image.
     if (settings.showNormals) {

@@ -54,14 +54,16 @@ void moveToWindow(std::vector<glm::dvec4>& clip, const Window& window) {
     }
 }
 
-}  // namespace
-
-Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
-    return renderWindow(scene, settings, {0, 0, scene.camera.width, scene.camera.height}, progress);
+/// The whole frame as a window.
+Window wholeFrame(const Scene& scene) {
+    return {0, 0, scene.camera.width, scene.camera.height};
 }
 
-Image renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
-                   const Progress& progress) {
+// Builds every Input stream of the scene (rules 3, 10, 14), moved to `window`, and calls
+// draw(input, width, height) with the window's size.
+template <class Draw>
+Image withSceneInput(const Scene& scene, const RenderSettings& settings, const Window& window,
+                     Draw&& draw) {
     const Mesh& mesh = *scene.mesh;
     const std::size_t n = mesh.positions.size();
     std::vector<glm::dvec4> clip = projectScene(scene);
@@ -100,7 +102,27 @@ Image renderWindow(const Scene& scene, const RenderSettings& settings, const Win
     input.texture = scene.texture.get();
     input.lighting = scene.lighting;
     input.eye = scene.camera.eye;
-    return draw(input, settings, window.width, window.height, progress);
+    return draw(input, window.width, window.height);
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
+    return renderWindow(scene, settings, wholeFrame(scene), progress);
+}
+
+Image renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
+                   const Progress& progress) {
+    return withSceneInput(scene, settings, window, [&](const Input& input, int width, int height) {
+        return draw(input, settings, width, height, progress);
+    });
+}
+
+Image renderSamples(const Scene& scene, const RenderSettings& settings) {
+    return withSceneInput(scene, settings, wholeFrame(scene),
+                          [&](const Input& input, int width, int height) {
+                              return drawSamples(input, settings, width, height);
+                          });
 }
 
 }  // namespace facet::reference

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "facet/multisample.hpp"
+
 namespace facet {
 namespace {
 
@@ -13,23 +15,31 @@ std::string gib(std::uint64_t bytes) {
 
 }  // namespace
 
-std::uint64_t frameBytes(int width, int height, int supersample) {
+std::uint64_t frameBytes(int width, int height, int supersample, int msaa) {
     // Colour (4 bytes) and depth (4 bytes) per pixel; a supersampled frame is drawn at n x n
     // the size and then resolved into a frame of the asked size.
     const auto pixels = static_cast<std::uint64_t>(std::max(width, 0)) *
                         static_cast<std::uint64_t>(std::max(height, 0));
     const auto n = static_cast<std::uint64_t>(std::max(supersample, 1));
-    return 8 * pixels * (n > 1 ? n * n + 1 : 1);
+    // Multisampling adds its per-sample buffer (colour and depth per sample) at the size it
+    // is drawn: n x n the frame when supersampled too.
+    const auto samples = static_cast<std::uint64_t>(msaaSamples(msaa));
+    const std::uint64_t perSample = samples > 1 ? n * n * samples : 0;
+    return 8 * pixels * ((n > 1 ? n * n + 1 : 1) + perSample);
 }
 
-std::optional<std::string> frameMemoryProblem(int width, int height, int supersample) {
-    const std::uint64_t bytes = frameBytes(width, height, supersample);
+std::optional<std::string> frameMemoryProblem(int width, int height, int supersample, int msaa) {
+    const std::uint64_t bytes = frameBytes(width, height, supersample, msaa);
     if (bytes <= kMaxFrameBytes) return std::nullopt;
     const int n = std::max(supersample, 1);
+    const int samples = msaaSamples(msaa);
     return "a " + std::to_string(width) + "x" + std::to_string(height) + " frame" +
            (n > 1 ? " at " + std::to_string(n) + "x" + std::to_string(n) + " supersampling" : "") +
+           (samples > 1
+                ? std::string(n > 1 ? " and" : " at") + " MSAA " + std::to_string(samples) + "x"
+                : "") +
            " needs " + gib(bytes) + " of frame buffers; the limit is " + gib(kMaxFrameBytes) +
-           " (choose a smaller size or supersampling)";
+           " (choose a smaller size, supersampling or MSAA)";
 }
 
 std::optional<std::string> meshMemoryProblem(std::uint64_t vertices, std::uint64_t triangles) {

@@ -100,6 +100,34 @@ inline float fragmentLod(const Planes& p, const Texture& texture, float dx, floa
     return 0.0f;
 }
 
+/// Variant V's interpolation weights pixel by pixel (fragmentWeights() with its span state):
+/// what a pixel loop that is not the scalar one (multisampling's) keeps per triangle.
+template <class V>
+struct PixelWeights {
+    SubdividedSpan span;
+    int n = 16;  ///< N of Interp::Subdivided
+    float invN = 1.0f / 16.0f;
+
+    explicit PixelWeights(int subdivision)
+        : n(subdivision), invN(1.0f / static_cast<float>(subdivision)) {}
+
+    /// The weights (m1, m2) at pixel (x, y), (dx, dy) from the planes' base, `depth` = 1/q there.
+    void at(const Planes& p, int x, int y, float dx, float dy, float depth, float& m1, float& m2) {
+        fragmentWeights<V>(p, x, y, dx, dy, depth, n, invN, span, m1, m2);
+    }
+};
+
+/// The colour of variant V's fragment at (dx, dy) from the planes' base, `depth` = 1/q there,
+/// weights (m1, m2) from fragmentWeights() (or exact ones off the pixel grid): the varyings, the
+/// texture level of detail, then fragmentColor().
+template <class V>
+inline glm::vec3 shadeAt(const Planes& p, const DrawConstants& k, float dx, float dy, float depth,
+                         float m1, float m2) {
+    float a[V::kCount > 0 ? V::kCount : 1];
+    interpolateVaryings<V>(p, m1, m2, a);
+    return fragmentColor<V>(a, k, fragmentLod<V>(p, *k.texture, dx, dy, depth));
+}
+
 /// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
 template <class V>
 [[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
@@ -121,10 +149,7 @@ template <class V>
         if (!passesDepth<V::kShader>(fb, i, depth)) return;
         float m1 = 0.0f, m2 = 0.0f;
         fragmentWeights<V>(p, x, y, dx, dy, depth, n, invN, span, m1, m2);
-        float a[V::kCount > 0 ? V::kCount : 1];
-        interpolateVaryings<V>(p, m1, m2, a);
-        const float lod = fragmentLod<V>(p, *k.texture, dx, dy, depth);
-        storeFragment<V::kShader>(fb, i, depth, fragmentColor<V>(a, k, lod));
+        storeFragment<V::kShader>(fb, i, depth, shadeAt<V>(p, k, dx, dy, depth, m1, m2));
     });
     return fragments;
 }

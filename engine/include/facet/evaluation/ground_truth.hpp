@@ -36,7 +36,8 @@ struct GroundTruth {
 using GroundTruthProgress = std::function<bool(double fraction)>;
 
 /// The settings the ground truth is rendered with: Solid, perspective-correct interpolation,
-/// Phong in place of Gouraud, bilinear on level 0 in place of any texture filter; the rest
+/// Phong in place of Gouraud, bilinear on level 0 in place of any texture filter, no
+/// multisampling; the rest
 /// (shader, combine, culling, background, near plane) as given.
 RenderSettings groundTruthSettings(const RenderSettings& settings);
 
