@@ -111,11 +111,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "each pixel), bin-load (triangles per 64x64 tile), depth-test (passed, "
                    "failed, no fragment), texture-lod (mip level under trilinear), interp-error "
                    "(affine against perspective, 8-bit steps); CPU engine")
-        ->check(CLI::IsMember(choices(debugViewNames()))) cmd
-        .add_option("--msaa", o.msaa,
-                    "Multisampling: coverage and depth at N standard sample positions per pixel, "
-                    "shaded once per pixel, averaged (edges anti-aliased, not textures or "
-                    "highlights; solid mode)")
+        ->check(CLI::IsMember(choices(debugViewNames())))
+        ->capture_default_str();
+    cmd.add_option("--msaa", o.msaa,
+                   "Multisampling: coverage and depth at N standard sample positions per pixel, "
+                   "shaded once per pixel, averaged (edges anti-aliased, not textures or "
+                   "highlights; solid mode)")
         ->check(CLI::IsMember({1, 2, 4, 8}))
         ->capture_default_str();
     cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
