@@ -20,27 +20,17 @@
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
 #include "facet/texture.hpp"
+#include "run_process.hpp"
 #include "shared_data.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-    int exitCode = -1;
-    std::string out;  // stdout and stderr together
-};
+using facet_test::Outcome;
 
 Outcome run(const std::string& args) {
-    const std::string cmd = std::string(FACET_CLI) + " " + args + " 2>&1";
-    Outcome r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), static_cast<int>(buf.size()), p)) r.out += buf.data();
-    const int status = pclose(p);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return facet_test::runCommand(std::string(FACET_CLI) + " " + args);
 }
 
 int countLines(const std::string& s) {

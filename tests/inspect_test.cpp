@@ -26,6 +26,7 @@
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
+#include "run_process.hpp"
 #include "shared_data.hpp"
 
 namespace facet {
@@ -466,21 +467,10 @@ TEST(Inspect, GroundTruthOfOnePixelIsTheWholeTruthsPixel) {
 
 // --- facet inspect ------------------------------------------------------------------------
 
-struct Outcome {
-    int exitCode = -1;
-    std::string out;
-};
+using facet_test::Outcome;
 
 Outcome runCli(const std::string& args) {
-    const std::string cmd = std::string(FACET_CLI) + " " + args + " 2>&1";
-    Outcome r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), static_cast<int>(buf.size()), p)) r.out += buf.data();
-    const int status = pclose(p);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return facet_test::runCommand(std::string(FACET_CLI) + " " + args);
 }
 
 TEST(InspectCli, PrintsTheHistoryOfTheSharedEdgePixel) {

@@ -21,6 +21,7 @@
 #include "facet/evaluation/image_diff.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/texture.hpp"
+#include "run_process.hpp"
 #include "state_file.hpp"
 #include "workspace.hpp"
 
@@ -39,20 +40,10 @@ static_assert(facet::view::kSidebarWidth == 380, "the window sizes below assume 
 inline constexpr int kFrameX = facet::view::kSidebarWidth;
 inline const std::string kWindow1280 = "1660x720";
 
-struct Outcome {
-    int exitCode = -1;
-    std::string out;  // stdout and stderr together
-};
+using facet_test::Outcome;
 
 inline Outcome run(const std::string& cmd) {
-    Outcome r;
-    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), static_cast<int>(buf.size()), p)) r.out += buf.data();
-    const int status = pclose(p);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return facet_test::runCommand(cmd);
 }
 
 inline bool have(const char* program) {
