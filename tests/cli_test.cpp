@@ -235,7 +235,9 @@ TEST_F(Cli, ViewWritesTheDebugView) {
         facet::Framebuffer expected;
         renderer.render(s, settings, expected);
         EXPECT_EQ(written.value().level(0).texels, expected.color) << name;
-        if (name != "none") EXPECT_NE(expected.color, shaded.color) << name;
+        if (name != "none") {
+            EXPECT_NE(expected.color, shaded.color) << name;
+        }
     }
     const Outcome bad = run("render " + scene + " --view heat -o " + out("x.png"));
     EXPECT_EQ(bad.exitCode, 2);
