@@ -711,7 +711,9 @@ TEST(ViewerModels, RecentFilesAndTheConfigFolderSurviveARestart) {
     EXPECT_EQ(configFolder(), (dir / "cfg" / "facet").string());
     unsetenv("XDG_CONFIG_HOME");
     const char* home = std::getenv("HOME");
-    if (home) EXPECT_EQ(configFolder(), (fs::path(home) / ".config" / "facet").string());
+    if (home) {
+        EXPECT_EQ(configFolder(), (fs::path(home) / ".config" / "facet").string());
+    }
     if (oldXdg) setenv("XDG_CONFIG_HOME", keep.c_str(), 1);
 
     const std::string file = (dir / "cfg" / "facet" / "recent.txt").string();
