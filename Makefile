@@ -51,6 +51,7 @@ test-sanitize: setup
 	  -DFACET_WERROR=ON -DFACET_SANITIZE=address,undefined -DFACET_BUILD_VIEWER=OFF $(CMAKE_ARGS)
 	cmake --build $(BUILD_ASAN)
 	cd $(BUILD_ASAN) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan-suppressions.txt \
 	  ctest --output-on-failure -j 2 -E '$(SANITIZE_SKIP)'; s=$$?; \
 	  bash $(CURDIR)/scripts/test-summary.sh; exit $$s
 
