@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "facet/evaluation/ground_truth.hpp"
+#include "facet/framebuffer.hpp"
 #include "facet/inspect.hpp"
 #include "render_options.hpp"
 
@@ -15,13 +16,6 @@ namespace facet::app {
 namespace {
 
 /// A packed RGBA pixel as #RRGGBB.
-std::string hex(std::uint32_t rgba) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", rgba & 0xFFu, (rgba >> 8) & 0xFFu,
-                  (rgba >> 16) & 0xFFu);
-    return buf;
-}
-
 std::string vec(const glm::vec3& v) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "(%.4f, %.4f, %.4f)", v.x, v.y, v.z);
@@ -33,11 +27,6 @@ std::string depthText(double d) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", d);
     return buf;
-}
-
-const char* vertexName(int v) {
-    static const char* kNames[3] = {"v0", "v1", "v2"};
-    return v >= 0 && v < 3 ? kNames[v] : "cut";
 }
 
 void printFragment(const InspectedFragment& f, std::size_t number, int samples) {
@@ -99,7 +88,7 @@ void printFragment(const InspectedFragment& f, std::size_t number, int samples) 
                         t.weight);
         std::printf("\n");
     }
-    std::printf("  colour out %s = %s\n", vec(f.shaded).c_str(), hex(f.rgba).c_str());
+    std::printf("  colour out %s = %s\n", vec(f.shaded).c_str(), hexFromRgba(f.rgba).c_str());
 }
 
 int runInspect(const RenderOptions& o, int x, int y, int truthSamples) {
@@ -116,14 +105,14 @@ int runInspect(const RenderOptions& o, int x, int y, int truthSamples) {
     std::printf("pixel (%d, %d) of %s, %dx%d, %s %s %s, lighting %s\n", x, y, o.scene.c_str(),
                 scene.camera.width, scene.camera.height, o.mode.c_str(), o.shader.c_str(),
                 o.interp.c_str(), std::string(toString(settings.lighting)).c_str());
-    std::printf("final colour  %s  depth %s\n", hex(h.finalColor).c_str(),
+    std::printf("final colour  %s  depth %s\n", hexFromRgba(h.finalColor).c_str(),
                 depthText(h.finalDepth).c_str());
     if (settings.shader == ShaderKind::Depth)
         std::printf("  (depth shader: viridis over the frame's range %g .. %g)\n", h.depthNear,
                     h.depthFar);
     if (h.hasReference) {
         const glm::vec3 c(h.referenceColor);
-        std::printf("reference     %s  %s  depth %s%s\n", hex(h.referenceRgba).c_str(),
+        std::printf("reference     %s  %s  depth %s%s\n", hexFromRgba(h.referenceRgba).c_str(),
                     vec(c).c_str(), depthText(h.referenceDepth).c_str(),
                     h.referenceAmbiguous ? "  (ambiguous: rounding may decide it, rule 8)" : "");
     }

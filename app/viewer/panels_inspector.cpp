@@ -44,22 +44,11 @@ void swatch(const char* id, const ImVec4& c, const char* label) {
     ImGui::TextUnformatted(label);
 }
 
-std::string hex(std::uint32_t p) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", p & 0xFFu, (p >> 8) & 0xFFu, (p >> 16) & 0xFFu);
-    return buf;
-}
-
 std::string depthText(double d) {
     if (std::isinf(d)) return "+inf";
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.5g", d);
     return buf;
-}
-
-const char* vertexName(int v) {
-    static const char* kNames[3] = {"v0", "v1", "v2"};
-    return v >= 0 && v < 3 ? kNames[v] : "cut";
 }
 
 /// What happened to the fragment, and its colour in the lists.
@@ -181,7 +170,7 @@ void shadingDetails(const InspectedFragment& f) {
     }
     char out[96];
     std::snprintf(out, sizeof out, "fragment colour %.4f %.4f %.4f = %s", f.shaded.r, f.shaded.g,
-                  f.shaded.b, hex(f.rgba).c_str());
+                  f.shaded.b, hexFromRgba(f.rgba).c_str());
     swatch("##out", rgbaColor(f.rgba), out);
 }
 
@@ -222,10 +211,12 @@ void summary(App& app, const InspectorState& s) {
     if (app.model.rendererChoice != RendererChoice::Cpu || app.compare.enabled)
         ImGui::TextDisabled("(the CPU engine's frame of these settings is inspected)");
 
-    std::string label = "final " + hex(h.finalColor) + "   depth " + depthText(h.finalDepth);
+    std::string label =
+        "final " + hexFromRgba(h.finalColor) + "   depth " + depthText(h.finalDepth);
     swatch("##final", rgbaColor(h.finalColor), label.c_str());
     if (h.hasReference) {
-        label = "reference " + hex(h.referenceRgba) + "   depth " + depthText(h.referenceDepth) +
+        label = "reference " + hexFromRgba(h.referenceRgba) + "   depth " +
+                depthText(h.referenceDepth) +
                 (h.referenceAmbiguous ? "   (ambiguous, rule 8)" : "");
         swatch("##ref", rgbaColor(h.referenceRgba), label.c_str());
     }
@@ -404,7 +395,7 @@ std::string inspectorStateText(const App& app) {
     }
     out << "inspector_pixel " << h.x << " " << h.y << "\n";
     out << "inspector_entries " << h.fragments.size() << " " << covered << " " << passed << "\n";
-    out << "inspector_final " << hex(h.finalColor) << "\n";
+    out << "inspector_final " << hexFromRgba(h.finalColor) << "\n";
     return out.str();
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace facet {
@@ -17,6 +18,9 @@ constexpr std::uint32_t packRgba(std::uint32_t r, std::uint32_t g, std::uint32_t
 constexpr std::uint32_t rgbaFromHex(std::uint32_t rgb) {
     return packRgba((rgb >> 16) & 0xFF, (rgb >> 8) & 0xFF, rgb & 0xFF);
 }
+
+/// "#RRGGBB" of a packed pixel (alpha left out), as messages and the inspector show colours.
+std::string hexFromRgba(std::uint32_t rgba);
 
 /// Colour and depth planes of equal size; depth holds camera-space Z, +inf where nothing drew.
 struct Framebuffer {

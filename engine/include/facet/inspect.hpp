@@ -145,4 +145,7 @@ struct PixelHistory {
 /// overlays drawn after the triangles (normals display, depth legend) are not part of it.
 PixelHistory inspectPixel(const Scene& scene, const RenderSettings& settings, int x, int y);
 
+/// "v0", "v1" or "v2" for an InspectedEdge's end, "cut" for a clipped piece's new vertex (−1).
+const char* vertexName(int vertex);
+
 }  // namespace facet

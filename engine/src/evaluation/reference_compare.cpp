@@ -11,14 +11,6 @@
 namespace facet {
 namespace {
 
-/// #RRGGBB of a packed pixel.
-std::string hex(std::uint32_t rgba) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", rgba & 0xFF, (rgba >> 8) & 0xFF,
-                  (rgba >> 16) & 0xFF);
-    return buf;
-}
-
 /// Failure messages name this many offending pixels at most.
 constexpr int kExamples = 8;
 
@@ -62,9 +54,9 @@ ReferenceDiff compareWithReference(const Framebuffer& frame, const reference::Im
         if ((refCovered != fastCovered || diff > 1) && shown < kExamples) {
             ++shown;
             const auto w = static_cast<std::size_t>(ref.width);
-            examples << "\n  pixel (" << i % w << "," << i / w << "): ref " << hex(refRgba[i])
-                     << " depth " << ref.depth[i] << ", frame " << hex(frame.color[i]) << " depth "
-                     << frame.depth[i];
+            examples << "\n  pixel (" << i % w << "," << i / w << "): ref "
+                     << hexFromRgba(refRgba[i]) << " depth " << ref.depth[i] << ", frame "
+                     << hexFromRgba(frame.color[i]) << " depth " << frame.depth[i];
         }
     }
     d.examples = examples.str();

@@ -238,6 +238,11 @@ void addReference(const Scene& scene, const RenderSettings& settings, PixelHisto
 
 }  // namespace
 
+const char* vertexName(int vertex) {
+    static const char* kNames[3] = {"v0", "v1", "v2"};
+    return vertex >= 0 && vertex < 3 ? kNames[vertex] : "cut";
+}
+
 PixelHistory inspectPixel(const Scene& scene, const RenderSettings& settings, int x, int y) {
     PixelHistory h;
     h.x = x;

@@ -2,8 +2,16 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstdio>
 
 namespace facet {
+
+std::string hexFromRgba(std::uint32_t rgba) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", rgba & 0xFFu, (rgba >> 8) & 0xFFu,
+                  (rgba >> 16) & 0xFFu);
+    return buf;
+}
 
 void Framebuffer::resize(int w, int h) {
     assert(w >= 0 && h >= 0);
