@@ -1,10 +1,12 @@
 #pragma once
-// Sort-middle parallel rasterization. The draw's triangles are taken in batches; in each batch
-// the front end runs on every thread over a contiguous slice of the triangles and bins what it
-// produces (coverage setup + planes) into 64×64 pixel tiles; then each tile is rasterized by one
-// thread, visiting the slices in order. So every pixel sees its fragments in submission order,
-// exactly as one thread would draw them: the image does not depend on the thread count, and no
-// lock guards the framebuffer because no two threads ever own the same tile.
+// Sort-middle parallel rasterization. A vertex pass first derives what the front end needs of
+// each vertex (ScreenVertex). Then the draw's triangles are taken in batches; for each batch the
+// front end runs over contiguous slices of the triangles, one per thread, and bins what it
+// produces (coverage setup + planes) into 64×64 pixel tiles; each tile is then rasterized by one
+// thread, visiting the slices in order, while the next batch is being binned. So every pixel
+// sees its fragments in submission order, exactly as one thread would draw them: the image does
+// not depend on the thread count, and no lock guards the framebuffer because no two threads ever
+// own the same tile.
 
 #include <cstddef>
 #include <cstdint>
@@ -51,9 +53,10 @@ class TileRenderer {
     };
     static std::size_t binTriangle(void* slice, const CoverageSetup& setup, const Planes& planes);
     std::size_t rasterizeTile(int tile, int tilesX, int width, int height, RasterizeFn rasterize,
-                              void* context, std::size_t slices) const;
+                              void* context, std::size_t first, std::size_t count) const;
 
-    std::vector<Slice> slices_;
+    std::vector<Slice> slices_;           // one set per thread, two when binning overlaps the tiles
+    std::vector<ScreenVertex> screen_;    // the vertex pass's output, one per clip position
     std::vector<std::size_t> fragments_;  // per thread
 };
 
