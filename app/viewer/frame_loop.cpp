@@ -108,7 +108,7 @@ int App::frame(Clock::time_point start, bool last) {
     }
     const auto tCollected = Clock::now();
 
-    gl->upload(*shown);
+    gl->upload(*shown, view);
     const auto tUpload = Clock::now();
     gl->draw(view, fbWidth, fbHeight);
     // llvmpipe draws on the CPU when the commands are flushed: finishing each stage charges

@@ -25,8 +25,8 @@ struct StageTimes {
     double twinDraw = 0.0;      ///< ...drawing, on the CPU clock up to glFinish
     double twinReadback = 0.0;  ///< ...reading the picture back, and the post passes
     double compare = 0.0;       ///< Compare: difference and composition
-    double upload = 0.0;        ///< glTexSubImage2D of the frame
-    double draw = 0.0;          ///< OpenGL drawing the frame's textured triangle (llvmpipe: CPU)
+    double upload = 0.0;        ///< the frame into its texture (reordered for the blit)
+    double draw = 0.0;          ///< OpenGL showing the frame: blit or triangle (llvmpipe: CPU)
     double ui = 0.0;            ///< ImGui: building the panels and drawing them
     double present = 0.0;       ///< buffer swap and window events
     double wait = 0.0;          ///< the main thread waiting for the engine (its thread)
