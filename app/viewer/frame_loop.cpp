@@ -137,6 +137,7 @@ int App::frame(Clock::time_point start, bool last) {
     lastTimes.upload = ms(tCollected, tUpload);
     lastTimes.draw = ms(tUpload, tDraw);
     lastTimes.ui = ms(tEvents, tPanels) + ms(tDraw, tUi);
+    lastTimes.uiDraw = ms(tDraw, tUi);
     lastTimes.present = ms(start, tEvents) + ms(tShot, tSwap);
     lastTimes.wait = waited;
     lastTimes.total = ms(start, tEnd) - ms(tUi, tShot);  // screenshots are not frame time
