@@ -110,7 +110,7 @@ int App::frame(Clock::time_point start, bool last) {
 
     gl->upload(*shown, view);
     const auto tUpload = Clock::now();
-    gl->draw(view, fbWidth, fbHeight);
+    gl->draw(view, work.backdrop, fbWidth, fbHeight);
     // llvmpipe draws on the CPU when the commands are flushed: finishing each stage charges
     // its real cost to it instead of to the swap (the swap would wait for it anyway).
     glFinish();

@@ -24,6 +24,14 @@ gl::TextureName makeFrameTexture() {
     return texture;
 }
 
+/// Sets the clear colour to packed R, G, B bytes (opaque): each byte comes back exactly.
+void clearColor(std::uint32_t rgba) {
+    const auto channel = [rgba](int shift) {
+        return static_cast<float>((rgba >> shift) & 0xFFu) / 255.0f;
+    };
+    glClearColor(channel(0), channel(8), channel(16), 1.0f);
+}
+
 /// Writes `frame` into `out` with each pixel's bytes R, G, B, A reordered to B, G, R, A and its
 /// alpha made opaque (as the triangle's shader does): the window's pixel format.
 void stageBgra(const Framebuffer& frame, std::vector<std::uint32_t>& out) {
@@ -92,7 +100,8 @@ void GlFrame::upload(const Framebuffer& frame, const Rect& view) {
     }
 }
 
-void GlFrame::draw(const Rect& view, int windowWidth, int windowHeight) const {
+void GlFrame::draw(const Rect& view, const Backdrop& backdrop, int windowWidth,
+                   int windowHeight) const {
     // The window's own framebuffer, every pixel written as the shader computes it.
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_SCISSOR_TEST);
@@ -105,13 +114,36 @@ void GlFrame::draw(const Rect& view, int windowWidth, int windowHeight) const {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glViewport(0, 0, windowWidth, windowHeight);
     const Texture& t = blit_ ? copied_ : scaled_;
-    const bool fills = view.x <= 0 && view.y <= 0 && view.w >= windowWidth &&
-                       view.h >= windowHeight && t.width > 0;
-    if (!fills) {  // bars around a letterboxed frame; a full frame overwrites every pixel anyway
+    const bool shown = t.width > 0 && view.w > 0 && view.h > 0 && program_.get() != 0;
+    const Rect& back = backdrop.rect;
+    const bool hasBackdrop = back.w > 0 && back.h > 0;
+    // The usual window: the side bar at the left and the frame filling the rest. One clear in
+    // the side bar's colour then does for both (the frame covers its share).
+    const bool backdropIsTheRest = shown && hasBackdrop && back.x == 0 && back.y == 0 &&
+                                   back.h == windowHeight && view.x == back.w && view.y == 0 &&
+                                   view.h == windowHeight && view.x + view.w == windowWidth;
+    const bool fills =
+        shown && view.x <= 0 && view.y <= 0 && view.w >= windowWidth && view.h >= windowHeight;
+    if (backdropIsTheRest) {
+        clearColor(backdrop.rgba);
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else if (!fills) {  // bars around a letterboxed frame
         glClearColor(0.08f, 0.08f, 0.08f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
     }
-    if (!t.width || view.w <= 0 || view.h <= 0 || program_.get() == 0) return;
+    if (shown) drawFrame(view, windowWidth, windowHeight);
+    if (hasBackdrop && !backdropIsTheRest) {
+        // After the frame, as ImGui's own background would have been drawn.
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(back.x, windowHeight - back.y - back.h, back.w, back.h);
+        clearColor(backdrop.rgba);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+    }
+}
+
+void GlFrame::drawFrame(const Rect& view, int windowWidth, int windowHeight) const {
+    const Texture& t = blit_ ? copied_ : scaled_;
     // GL's window origin is the bottom left; `view` counts from the top.
     const int bottom = windowHeight - view.y - view.h;
     if (blit_ && view.w == t.width && view.h == t.height) {

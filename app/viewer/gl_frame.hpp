@@ -33,13 +33,16 @@ class GlFrame {
     /// changed, glTexSubImage2D otherwise.
     void upload(const Framebuffer& frame, const Rect& view);
 
-    /// Clears the window (bars) and shows the last upload in `view` (window pixels, top-left
-    /// origin) of a framebuffer `windowHeight` pixels tall, as upload() chose for that view. It
-    /// sets every piece of GL state it relies on, so whatever ImGui or the OpenGL twin left bound
-    /// does not matter.
-    void draw(const Rect& view, int windowWidth, int windowHeight) const;
+    /// Clears the window (bars), shows the last upload in `view` (window pixels, top-left
+    /// origin) of a framebuffer `windowWidth` × `windowHeight`, as upload() chose for that view,
+    /// and fills `backdrop`. It sets every piece of GL state it relies on, so whatever ImGui or
+    /// the OpenGL twin left bound does not matter.
+    void draw(const Rect& view, const Backdrop& backdrop, int windowWidth, int windowHeight) const;
 
   private:
+    /// The frame alone, into a non-empty `view`: the blit or the triangle.
+    void drawFrame(const Rect& view, int windowWidth, int windowHeight) const;
+
     /// A texture and the size of its image (0 × 0: none yet).
     struct Texture {
         gl::TextureName name;
