@@ -77,6 +77,10 @@ TEST_F(ViewerGui, SmokeShowsTheEngineFrameAndThePanels) {
     // ...the side bar at the left, the stats box in the image's top right corner.
     EXPECT_GT(differingShare(window, frame, 15, 15, 365, 300), 0.5);
     EXPECT_GT(shifted(1280 - 150, 12, 1280 - 12, 40), 0.2);
+    // The side bar's background (GlFrame clears it in ImGui's WindowBg, #0F0F0F) down its
+    // left padding, where no widget draws.
+    for (int y = 100; y < 720; y += 100)
+        EXPECT_EQ(window.color[window.index(2, y)] & 0xFFFFFFu, 0x0F0F0Fu) << y;
 
     const auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("frames"), "5");
@@ -117,6 +121,9 @@ TEST_F(ViewerGui, KeepingTheSceneSizeLetterboxesTheFrame) {
     EXPECT_NE(window.color[window.index(x, 400)], bar);  // the frame's background
     EXPECT_EQ(window.color[window.index(x, 419)], window.color[window.index(x, 400)]);
     EXPECT_EQ(window.color[window.index(x, 420)], bar);
+    // Letterboxed, the side bar's background is a clear of its own, in ImGui's WindowBg.
+    for (int y = 100; y < 480; y += 100)
+        EXPECT_EQ(window.color[window.index(2, y)] & 0xFFFFFFu, 0x0F0F0Fu) << y;
 }
 
 TEST_F(ViewerGui, DraggingOverTheImageOrbitsAndTheWheelZooms) {

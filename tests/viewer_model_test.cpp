@@ -556,6 +556,16 @@ TEST(ViewerStats, EachRenderersMedianCountsOnlyTheFramesItRan) {
     EXPECT_NE(fpsReport(h, 0).find("twin 6.00"), std::string::npos) << fpsReport(h, 0);
 }
 
+TEST(ViewerStats, TheReportSplitsTheUiIntoBuildingAndDrawing) {
+    // llvmpipe draws the panels on the CPU: the report shows how much of the UI's time that is.
+    FrameHistory h;
+    for (int i = 1; i <= 3; ++i)
+        h.push(StageTimes{.ui = 4.0 * i, .uiDraw = 3.0 * i, .total = 20.0});
+    EXPECT_DOUBLE_EQ(h.median().uiDraw, 6.0);
+    const std::string line = fpsReport(h, 0);
+    EXPECT_NE(line.find("ui 8.00 (drawing 6.00)"), std::string::npos) << line;
+}
+
 TEST(ViewerResources, FindsTheDefaultScene) {
     const std::string scene = defaultScenePath();
     ASSERT_FALSE(scene.empty());

@@ -108,9 +108,9 @@ int App::frame(Clock::time_point start, bool last) {
     }
     const auto tCollected = Clock::now();
 
-    gl->upload(*shown);
+    gl->upload(*shown, view);
     const auto tUpload = Clock::now();
-    gl->draw(view, fbWidth, fbHeight);
+    gl->draw(view, work.backdrop, fbWidth, fbHeight);
     // llvmpipe draws on the CPU when the commands are flushed: finishing each stage charges
     // its real cost to it instead of to the swap (the swap would wait for it anyway).
     glFinish();
@@ -137,6 +137,7 @@ int App::frame(Clock::time_point start, bool last) {
     lastTimes.upload = ms(tCollected, tUpload);
     lastTimes.draw = ms(tUpload, tDraw);
     lastTimes.ui = ms(tEvents, tPanels) + ms(tDraw, tUi);
+    lastTimes.uiDraw = ms(tDraw, tUi);
     lastTimes.present = ms(start, tEvents) + ms(tShot, tSwap);
     lastTimes.wait = waited;
     lastTimes.total = ms(start, tEnd) - ms(tUi, tShot);  // screenshots are not frame time

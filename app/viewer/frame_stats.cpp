@@ -28,7 +28,8 @@ StageTimes mediansFrom(const std::vector<StageTimes>& frames, std::size_t begin)
     for (double StageTimes::*field :
          {&StageTimes::render, &StageTimes::twin, &StageTimes::twinUpload, &StageTimes::twinDraw,
           &StageTimes::twinReadback, &StageTimes::compare, &StageTimes::upload, &StageTimes::draw,
-          &StageTimes::ui, &StageTimes::present, &StageTimes::wait, &StageTimes::total})
+          &StageTimes::ui, &StageTimes::uiDraw, &StageTimes::present, &StageTimes::wait,
+          &StageTimes::total})
         m.*field = fieldMedian(frames, begin, field);
     return m;
 }
@@ -74,9 +75,9 @@ std::string fpsReport(const FrameHistory& history, std::size_t skip) {
     char line[256];
     std::snprintf(line, sizeof line,
                   "median %.1f fps (%.2f ms: render %.2f, twin %.2f, compare %.2f, upload %.2f, "
-                  "draw %.2f, ui %.2f, present %.2f, wait %.2f) over %zu frames",
+                  "draw %.2f, ui %.2f (drawing %.2f), present %.2f, wait %.2f) over %zu frames",
                   m.total > 0.0 ? 1000.0 / m.total : 0.0, m.total, m.render, m.twin, m.compare,
-                  m.upload, m.draw, m.ui, m.present, m.wait, n);
+                  m.upload, m.draw, m.ui, m.uiDraw, m.present, m.wait, n);
     return line;
 }
 

@@ -25,9 +25,10 @@ struct StageTimes {
     double twinDraw = 0.0;      ///< ...drawing, on the CPU clock up to glFinish
     double twinReadback = 0.0;  ///< ...reading the picture back, and the post passes
     double compare = 0.0;       ///< Compare: difference and composition
-    double upload = 0.0;        ///< glTexSubImage2D of the frame
-    double draw = 0.0;          ///< OpenGL drawing the frame's textured triangle (llvmpipe: CPU)
+    double upload = 0.0;        ///< the frame into its texture (reordered for the blit)
+    double draw = 0.0;          ///< OpenGL showing the frame: blit or triangle (llvmpipe: CPU)
     double ui = 0.0;            ///< ImGui: building the panels and drawing them
+    double uiDraw = 0.0;        ///< ...of which drawing them (llvmpipe: CPU, up to glFinish)
     double present = 0.0;       ///< buffer swap and window events
     double wait = 0.0;          ///< the main thread waiting for the engine (its thread)
     double total = 0.0;         ///< start of one frame to the start of the next
@@ -65,9 +66,9 @@ struct FrameHistory {
 };
 
 /// One line: "median 123.4 fps (8.10 ms: render 6.00, twin 0.00, compare 0.00, upload 0.20,
-/// draw 0.50, ui 0.80, present 0.60, wait 1.00) over N frames". With the engine on its own
-/// thread, render and compare overlap the other stages and the stages add up to more than the
-/// frame.
+/// draw 0.50, ui 0.80 (drawing 0.50), present 0.60, wait 1.00) over N frames". With the engine on
+/// its own thread, render and compare overlap the other stages and the stages add up to more than
+/// the frame.
 std::string fpsReport(const FrameHistory& history, std::size_t skip);
 
 }  // namespace facet::view

@@ -2,6 +2,8 @@
 // Where the frame sits in the window: a letterboxed rectangle that never distorts the aspect,
 // and the mapping from window points to frame pixels (for pan speed and the Compare divider).
 
+#include <cstdint>
+
 #include <glm/vec2.hpp>
 
 namespace facet::view {
@@ -12,6 +14,14 @@ struct Rect {
     int y = 0;
     int w = 0;
     int h = 0;
+};
+
+/// A rectangle of one opaque colour under the panels (window pixels, top-left origin; empty:
+/// none): the side bar's background, which GlFrame fills with a clear because llvmpipe would
+/// shade ImGui's quad for it pixel by pixel, blending included (a third of the panels' cost).
+struct Backdrop {
+    Rect rect;
+    std::uint32_t rgba = 0;  ///< bytes R, G, B, A (packRgba's order); alpha ignored
 };
 
 /// The largest rectangle of the frame's aspect centred in the area (integer pixels, at least

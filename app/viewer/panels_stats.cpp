@@ -71,6 +71,7 @@ void statsPanel(App& app) {
         row("upload", m.upload);
         row("draw frame", m.draw);
         row("ui", m.ui);
+        row("  drawing it", m.uiDraw);
         row("swap + events", m.present);
         if (plan.engine) row("waiting for engine", m.wait);
         ImGui::EndTable();

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -52,6 +53,21 @@ void sidebarHeader(App& app) {
     ImGui::Separator();
 }
 
+/// Hands the current window's background (Begin'd after SetNextWindowBgAlpha(0), so ImGui draws
+/// no quad for it; ImGuiWindowFlags_NoBackground would drop the border too) to GlFrame, which
+/// fills it with a clear: the same pixels (WindowBg is opaque, applyUiStyle) for a fraction of
+/// what llvmpipe spends shading and blending ImGui's quad over them.
+void leaveBackgroundToGl(App& app) {
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    const ImVec2 p = ImGui::GetWindowPos();
+    const ImVec2 s = ImGui::GetWindowSize();
+    // The pixels whose centres the rectangle covers, as the rasterizer would fill them.
+    const auto edge = [](float v) { return static_cast<int>(std::ceil(v - 0.5f)); };
+    const int x0 = edge(p.x * scale.x), x1 = edge((p.x + s.x) * scale.x);
+    const int y0 = edge(p.y * scale.y), y1 = edge((p.y + s.y) * scale.y);
+    app.work.backdrop = {{x0, y0, x1 - x0, y1 - y0}, ImGui::GetColorU32(ImGuiCol_WindowBg)};
+}
+
 void sidebar(App& app) {
     WorkspaceUi& w = app.work;
     const Rect& bar = w.layout.sidebar;
@@ -67,13 +83,14 @@ void sidebar(App& app) {
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(bar.w), height),
                              w.sidebarSizeSet ? ImGuiCond_Always : ImGuiCond_Once);
     w.sidebarSizeSet = false;
-    ImGui::SetNextWindowBgAlpha(1.0f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+    ImGui::SetNextWindowBgAlpha(0.0f);  // GlFrame fills it (leaveBackgroundToGl)
     const bool open = ImGui::Begin("facet##sidebar", nullptr, flags);
     ImGui::PopStyleVar();
+    leaveBackgroundToGl(app);
     if (open) {
         noteWindow(app, "sidebar");
         w.sidebarWidth = static_cast<int>(ImGui::GetWindowWidth());
@@ -112,7 +129,10 @@ void collapsedStrip(App& app) {
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                                    ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
-    if (ImGui::Begin("##sidebar-strip", nullptr, flags)) {
+    ImGui::SetNextWindowBgAlpha(0.0f);  // GlFrame fills it (leaveBackgroundToGl)
+    const bool open = ImGui::Begin("##sidebar-strip", nullptr, flags);
+    leaveBackgroundToGl(app);
+    if (open) {
         noteWindow(app, "sidebar");
         if (ImGui::Button(">>", ImVec2(-1.0f, 0.0f))) app.work.collapsed = false;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open the side bar");
@@ -225,6 +245,7 @@ void placeFrame(App& app) {
 
 void drawPanels(App& app) {
     app.work.drawn.clear();
+    app.work.backdrop = {};
     drawLightMarker(app);
     if (planFrame(app.model.rendererChoice, app.compare.enabled).twin || app.compare.enabled)
         compareOverlay(app);

@@ -53,7 +53,8 @@ struct WorkspaceUi {
     std::vector<Action> actions;          ///< keys pressed since the last frame, in order
     Notice notice;
     LightDrag lightDrag = LightDrag::None;
-    Workspace layout;                   ///< this frame's side bar and image area
+    Workspace layout;   ///< this frame's side bar and image area
+    Backdrop backdrop;  ///< the side bar's background, left to GlFrame (empty: ImGui draws it)
     std::map<std::string, Rect> drawn;  ///< windows drawn this frame, by name (for --state)
 };
 
