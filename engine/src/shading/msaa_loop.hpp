@@ -1,7 +1,8 @@
 #pragma once
 // The multisampled triangle pixel loop (RenderSettings::msaa > 1), a variant of its own picked
 // once per draw (pipeline/renderer.cpp), so the one-sample loops (scalar_loop.hpp,
-// span_loop-inl.hpp) are untouched by it.
+// span_loop-inl.hpp) are untouched by it. This scalar loop is the rule; wide affine and
+// perspective triangles take its vector twin (msaa_loop-inl.hpp), equal to it bit for bit.
 //
 // Per pixel: coverage at each standard sample position (facet/multisample.hpp) with the same
 // exact integer edge functions and top-left rule as the pixel centres (coverage.hpp), depth
