@@ -1,19 +1,27 @@
 // The span loop on every SIMD target compiled into the engine that this CPU has (forced one at a
 // time through Highway), against the scalar loop: the images must be equal bit for bit, colour
-// and depth, for every variant with a span loop, on the course scenes, Spot and the bunny.
+// and depth, for every variant with a span loop, on the course scenes, Spot and the bunny. The
+// same for the multisampled span loop against the scalar multisampled loop, sample by sample,
+// on those scenes and on a plane of triangles sharing every edge, drawn twice (depth ties).
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include "facet/camera.hpp"
+#include "facet/multisample.hpp"
 #include "facet/render.hpp"
 #include "pipeline/span_targets.hpp"
 #include "scene_cases.hpp"
+#include "world_at.hpp"
 
 namespace facet::test {
 namespace {
@@ -50,6 +58,66 @@ std::vector<std::int64_t> runnableTargets() {
     std::vector<std::int64_t> out;
     for (std::int64_t rest = both; rest != 0; rest &= rest - 1) out.push_back(rest & -rest);
     return out;
+}
+
+/// Samples (or pixels) where two framebuffers differ, colour and depth (bitwise: the cleared
+/// depth is +inf and must stay so).
+struct Diffs {
+    std::size_t color = 0, depth = 0;
+};
+Diffs differences(const Framebuffer& a, const Framebuffer& b) {
+    Diffs n;
+    EXPECT_EQ(a.color.size(), b.color.size());
+    for (std::size_t i = 0; i < a.color.size() && i < b.color.size(); ++i) {
+        n.color += a.color[i] != b.color[i] ? 1 : 0;
+        n.depth += std::memcmp(&a.depth[i], &b.depth[i], sizeof(float)) != 0;
+    }
+    return n;
+}
+
+/// The multisampled span loop exists for this target (else the comparisons would compare the
+/// scalar loop with itself).
+void expectMsaaSpanLoop() {
+    detail::VariantKey key{
+        ShaderKind::Painter, Interp::Perspective, {}, TextureFilter::Nearest, false};
+    key.layout.color = true;
+    EXPECT_NE(detail::msaaSpanLoop(key), nullptr) << detail::spanTarget();
+}
+
+/// Renders `scene` at every sample count with the scalar loops, then on every target, and
+/// expects the same per-sample buffer (every sample's colour and depth) and resolved frame.
+void expectEveryTargetGivesTheScalarSamples(const Scene& scene, const RenderSettings& base,
+                                            const std::string& what) {
+    Renderer renderer;
+    for (const int n : kMsaaCounts) {
+        RenderSettings settings = base;
+        settings.msaa = n;
+        const std::string name = what + " msaa" + std::to_string(n);
+        Framebuffer scalarFrame;
+        detail::enableSpanLoops(false);
+        const RenderStats expected = renderer.render(scene, settings, scalarFrame);
+        const Framebuffer scalarSamples = renderer.samples();
+        detail::enableSpanLoops(true);
+        ASSERT_GT(expected.fragments, 0u) << name;
+        ASSERT_EQ(scalarSamples.color.size(), scalarFrame.color.size() * static_cast<unsigned>(n))
+            << name;
+        for (const std::int64_t target : runnableTargets()) {
+            hwy::SetSupportedTargetsForTest(target);
+            ASSERT_STREQ(detail::spanTarget(), hwy::TargetName(target));
+            expectMsaaSpanLoop();
+            Framebuffer frame;
+            const RenderStats actual = renderer.render(scene, settings, frame);
+            EXPECT_EQ(actual.fragments, expected.fragments) << name;
+            const Diffs samples = differences(scalarSamples, renderer.samples());
+            const Diffs pixels = differences(scalarFrame, frame);
+            const char* on = hwy::TargetName(target);
+            EXPECT_EQ(samples.color, 0u) << name << " sample colours on " << on;
+            EXPECT_EQ(samples.depth, 0u) << name << " sample depths on " << on;
+            EXPECT_EQ(pixels.color, 0u) << name << " resolved colours on " << on;
+            EXPECT_EQ(pixels.depth, 0u) << name << " resolved depths on " << on;
+        }
+        hwy::SetSupportedTargetsForTest(0);
+    }
 }
 
 class SimdTargets : public testing::TestWithParam<std::string> {
@@ -91,6 +159,113 @@ TEST_P(SimdTargets, EveryTargetGivesTheScalarImage) {
             EXPECT_EQ(depthDiffs, 0u) << caseName(c) << " on " << hwy::TargetName(target);
         }
         hwy::SetSupportedTargetsForTest(0);
+    }
+}
+
+// Multisampling on the same scenes at a smaller size (four to eight times the samples), with
+// the settings whose variants have a multisampled span loop: vertex colours, both lightings,
+// depth, the vector bilinear texel and the lane-by-lane texture shading.
+TEST_P(SimdTargets, EveryTargetGivesTheScalarSamples) {
+    std::string error;
+    const Scene* loaded = loadCached(GetParam(), error);
+    ASSERT_NE(loaded, nullptr) << error;
+    Scene scene = *loaded;
+    scene.camera = resizedCamera(scene.camera, 320, 180);
+    for (const SceneCase& c : settingsCases(GetParam())) {
+        if (c.interp == Interp::Subdivided || c.filter == TextureFilter::Trilinear) continue;
+        expectEveryTargetGivesTheScalarSamples(scene, settingsFor(c), caseName(c));
+    }
+}
+
+class SimdTargetsMsaa : public testing::Test {
+  protected:
+    void TearDown() override {
+        detail::enableSpanLoops(true);
+        hwy::SetSupportedTargetsForTest(0);
+    }
+};
+
+/// A plane of triangles sharing every edge, inner vertices jittered, wider than the image (every
+/// sample covered), cells wide enough (about 30 px) for the span loop, tilted in depth; then
+/// the same triangles again in other colours, `copies` times: exact depth ties.
+Scene jitteredPlane(int copies) {
+    const int w = 200, h = 120, cols = 7, rows = 4;
+    Scene scene;
+    scene.camera.width = w;
+    scene.camera.height = h;
+    scene.camera.focal = 150.0;
+    Mesh mesh;
+    std::uint32_t seed = 2024;
+    auto jitter = [&seed]() {
+        seed = seed * 1664525u + 1013904223u;
+        return (static_cast<double>(seed >> 8) / 16777216.0 - 0.5) * 9.3;
+    };
+    std::vector<glm::vec3> grid;
+    for (int j = 0; j <= rows; ++j) {
+        for (int i = 0; i <= cols; ++i) {
+            double x = -3.0 + (w + 6.0) * i / cols, y = -3.0 + (h + 6.0) * j / rows;
+            if (i > 0 && i < cols && j > 0 && j < rows) {
+                x += jitter();
+                y += jitter();
+            }
+            grid.push_back(worldAt(scene.camera, x, y, 2.0 + 0.15 * i + 0.1 * j));
+        }
+    }
+    const auto c = static_cast<std::uint32_t>(cols + 1);
+    for (int copy = 0; copy <= copies; ++copy) {
+        const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+        for (std::size_t v = 0; v < grid.size(); ++v) {
+            mesh.positions.push_back(grid[v]);
+            mesh.colors.emplace_back(static_cast<float>(v % 5) / 4.0f,
+                                     static_cast<float>(v % 3) / 2.0f,
+                                     static_cast<float>(copy) / static_cast<float>(copies + 1));
+        }
+        for (int j = 0; j < rows; ++j) {
+            for (int i = 0; i < cols; ++i) {
+                const auto v =
+                    base + static_cast<std::uint32_t>(j) * c + static_cast<std::uint32_t>(i);
+                mesh.indices.insert(mesh.indices.end(), {v, v + 1, v + c, v + 1, v + c + 1, v + c});
+            }
+        }
+    }
+    scene.mesh = std::make_shared<const Mesh>(std::move(mesh));
+    return scene;
+}
+
+// Shared edges (every sample covered once: the plane alone leaves no background sample) and
+// depth ties (drawn again, the plane keeps its first colours under the depth test; without it
+// the last copy's), on every target, sample for sample against the scalar loop.
+TEST_F(SimdTargetsMsaa, SharedEdgesAndDepthTiesGiveTheScalarSamples) {
+    const Scene once = jitteredPlane(0), thrice = jitteredPlane(2);
+    for (const ShaderKind shader : {ShaderKind::Painter, ShaderKind::Simple}) {
+        for (const Interp interp : {Interp::Perspective, Interp::Affine}) {
+            RenderSettings s;
+            s.shader = shader;
+            s.interp = interp;
+            s.background = 0xFF00FF;  // no vertex colour is magenta
+            std::string what(toString(shader));
+            what += ' ';
+            what += toString(interp);
+            expectEveryTargetGivesTheScalarSamples(once, s, what + " plane");
+            expectEveryTargetGivesTheScalarSamples(thrice, s, what + " plane thrice");
+            // With the depth test, on the best target: every sample covered (written), and the
+            // ties keep the first copy.
+            if (shader != ShaderKind::Painter) continue;
+            for (const int n : kMsaaCounts) {
+                s.msaa = n;
+                Renderer renderer;
+                Framebuffer frame;
+                renderer.render(once, s, frame);
+                const Framebuffer plane = renderer.samples();
+                std::size_t background = 0;
+                for (const float z : plane.depth) background += std::isinf(z) ? 1 : 0;
+                EXPECT_EQ(background, 0u) << what << " msaa" << n;
+                renderer.render(thrice, s, frame);
+                const Diffs d = differences(plane, renderer.samples());
+                EXPECT_EQ(d.color, 0u) << what << " msaa" << n;
+                EXPECT_EQ(d.depth, 0u) << what << " msaa" << n;
+            }
+        }
     }
 }
 

@@ -17,24 +17,31 @@ namespace facet::detail {
 /// Largest accepted samples per axis (16 per pixel).
 inline constexpr int kMaxSupersample = 4;
 
-/// The sum of packed RGBA pixels, channel by channel, and their rounded mean.
+/// The sum of packed RGBA pixels, channel by channel, and their rounded mean. The channels are
+/// summed two to a word in 16-bit fields (R and B, G and A): up to 256 pixels of 255 fit, and
+/// the sums are one mask and add per pixel instead of four.
 struct RgbaSum {
-    std::uint32_t sum[4] = {0, 0, 0, 0};
+    static constexpr std::uint32_t kFields = 0x00FF00FFu;  ///< bytes 0 and 2
+    std::uint32_t rb = 0, ga = 0;  ///< sums of R (bits 0-15) and B (16-31); of G and A
 
     /// Adds one packed pixel.
     void add(std::uint32_t c) {
-        for (int k = 0; k < 4; ++k) sum[k] += (c >> (8 * k)) & 0xFFu;
+        rb += c & kFields;
+        ga += (c >> 8) & kFields;
     }
-    /// The mean of `count` pixels, each channel rounded to nearest, packed.
+    /// The mean of `count` (1 to 256) pixels, each channel rounded to nearest, packed.
     std::uint32_t mean(std::uint32_t count) const {
-        // Every block but 3×3 has a power-of-two count: a shift, not a division per channel.
-        const int shift = std::has_single_bit(count) ? std::countr_zero(count) : -1;
-        std::uint32_t packed = 0;
-        for (int k = 0; k < 4; ++k) {
-            const std::uint32_t v = sum[k] + count / 2;
-            packed |= (shift >= 0 ? v >> shift : v / count) << (8 * k);
+        const std::uint32_t half = count / 2 * 0x00010001u;
+        // Every block but 3×3 has a power-of-two count: one shift for two fields (a field's
+        // mean fits its low byte; what the shift brings down from the field above is masked).
+        if (std::has_single_bit(count)) {
+            const int shift = std::countr_zero(count);
+            return ((rb + half) >> shift & kFields) | ((ga + half) >> shift & kFields) << 8;
         }
-        return packed;
+        auto fields = [count](std::uint32_t v) {
+            return ((v & 0xFFFFu) / count) | ((v >> 16) / count) << 16;
+        };
+        return fields(rb + half) | fields(ga + half) << 8;
     }
 };
 

@@ -1,6 +1,7 @@
-// One instantiation of every variant's span loop per SIMD target: hwy/foreach_target.h compiles
-// this file once for each target Highway enables, and HWY_DYNAMIC_DISPATCH picks the best one
-// the CPU has. The choice returns a plain function pointer, called once per triangle.
+// One instantiation of every variant's span loop and multisampled span loop per SIMD target:
+// hwy/foreach_target.h compiles this file once for each target Highway enables, and
+// HWY_DYNAMIC_DISPATCH picks the best one the CPU has. The choice returns a plain function pointer,
+// called once per triangle.
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/span_targets.cpp"
@@ -10,6 +11,7 @@
 
 #include "pipeline/span_targets.hpp"
 #include "pipeline/variants.hpp"
+#include "shading/msaa_loop-inl.hpp"
 #include "shading/span_loop-inl.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -20,6 +22,15 @@ RasterizeFn spanLoopOf(const VariantKey& key) {
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
         if constexpr (kHasSpanLoop<V>) loop = &rasterizeSpans<V>;
+    });
+    return loop;
+}
+
+RasterizeFn msaaLoopOf(const VariantKey& key) {
+    RasterizeFn loop = nullptr;
+    dispatch(key, [&](auto variant) {
+        using V = decltype(variant);
+        if constexpr (kHasSpanLoop<V>) loop = &rasterizeMsaaSpans<V>;
     });
     return loop;
 }
@@ -40,11 +51,17 @@ std::atomic<bool> gSpanLoops{true};
 }  // namespace
 
 HWY_EXPORT(spanLoopOf);
+HWY_EXPORT(msaaLoopOf);
 HWY_EXPORT(targetName);
 
 RasterizeFn spanLoop(const VariantKey& key) {
     if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
     return HWY_DYNAMIC_DISPATCH(spanLoopOf)(key);
+}
+
+RasterizeFn msaaSpanLoop(const VariantKey& key) {
+    if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
+    return HWY_DYNAMIC_DISPATCH(msaaLoopOf)(key);
 }
 
 std::int64_t spanTargetsCompiled() {

@@ -14,15 +14,19 @@ namespace facet::detail {
 /// variant has none (subdivided interpolation, trilinear filtering).
 RasterizeFn spanLoop(const VariantKey& key);
 
+/// The multisampled span loop (msaa_loop-inl.hpp; its context an MsaaContext) of `key`'s
+/// variant for the same target as spanLoop(); null when the variant has none.
+RasterizeFn msaaSpanLoop(const VariantKey& key);
+
 /// The name of the SIMD target spanLoop() picks now, e.g. "AVX2".
 const char* spanTarget();
 
 /// The Highway targets (HWY_* bits) the span loops were compiled for.
 std::int64_t spanTargetsCompiled();
 
-/// Turns the span loops off (spanLoop() returns null: every triangle takes the scalar loop) or
-/// back on, for the whole process: the scalar loop is the reference the vector targets must
-/// equal bit for bit. Not for use while a draw runs.
+/// Turns the span loops off (spanLoop() and msaaSpanLoop() return null: every triangle takes the
+/// scalar loop) or back on, for the whole process: the scalar loop is the reference the vector
+/// targets must equal bit for bit. Not for use while a draw runs.
 void enableSpanLoops(bool enabled);
 
 /// spanLoop() for a compile-time Variant.

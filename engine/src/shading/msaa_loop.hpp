@@ -1,7 +1,8 @@
 #pragma once
 // The multisampled triangle pixel loop (RenderSettings::msaa > 1), a variant of its own picked
 // once per draw (pipeline/renderer.cpp), so the one-sample loops (scalar_loop.hpp,
-// span_loop-inl.hpp) are untouched by it.
+// span_loop-inl.hpp) are untouched by it. This scalar loop is the rule; wide affine and
+// perspective triangles take its vector twin (msaa_loop-inl.hpp), equal to it bit for bit.
 //
 // Per pixel: coverage at each standard sample position (facet/multisample.hpp) with the same
 // exact integer edge functions and top-left rule as the pixel centres (coverage.hpp), depth
@@ -63,6 +64,16 @@ struct SamplePattern {
     }
 };
 
+/// off[i][j]: edge i's value at sample j minus its value at the pixel's centre, the same for
+/// every pixel. E moves by −dy·ox + dx·oy, and the steps per pixel are −dy·256 and dx·256, so
+/// the division is exact.
+inline void sampleEdgeOffsets(const CoverageSetup& s, const SamplePattern& pattern,
+                              std::int64_t (&off)[3][kMaxMsaa]) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < pattern.count; ++j)
+            off[i][j] = (s.stepX[i] * pattern.ox[j] + s.stepY[i] * pattern.oy[j]) / kSubPixel;
+}
+
 /// Calls visit(x, y, e, covered) for every pixel of the box with a covered sample, row by row,
 /// left to right: e the edge values at its centre, bit j of `covered` set when sample j is
 /// inside by the top-left rule (the exact integer test of coverage.hpp, at the sample).
@@ -70,12 +81,8 @@ template <class Visit>
 inline void forEachCoveredSamples(const CoverageSetup& s, const SamplePattern& pattern,
                                   Visit&& visit) {
     const int n = pattern.count;
-    // Edge i at sample j, relative to the centre: E moves by −dy·ox + dx·oy, and the steps per
-    // pixel are −dy·256 and dx·256, so the division is exact.
     std::int64_t off[3][kMaxMsaa];
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < n; ++j)
-            off[i][j] = (s.stepX[i] * pattern.ox[j] + s.stepY[i] * pattern.oy[j]) / kSubPixel;
+    sampleEdgeOffsets(s, pattern, off);
     std::int64_t row[3] = {s.e0[0], s.e0[1], s.e0[2]};
     for (int y = s.box.y0; y <= s.box.y1; ++y) {
         std::int64_t e[3] = {row[0], row[1], row[2]};
@@ -102,11 +109,13 @@ struct MsaaContext {
     int subdivision = 16;  ///< N of Interp::Subdivided
     SamplePattern pattern;
     std::size_t at[kMaxMsaa] = {};  ///< SamplePattern::at() for this buffer
+    /// The vector loop (msaa_loop-inl.hpp) of the draw's variant and SIMD target, or null.
+    RasterizeFn spans = nullptr;
 
     /// The context of `count` samples drawing into `samples` (already sized).
     static MsaaContext make(Framebuffer& samples, const DrawConstants& constants, int subdivision,
-                            int count) {
-        MsaaContext c{&samples, &constants, subdivision, SamplePattern::of(count)};
+                            int count, RasterizeFn spans) {
+        MsaaContext c{&samples, &constants, subdivision, SamplePattern::of(count), {}, spans};
         for (int k = 0; k < c.pattern.count; ++k) c.at[k] = c.pattern.at(k, samples.width);
         return c;
     }
@@ -172,6 +181,18 @@ template <class V>
             }
         });
     return fragments;
+}
+
+/// The multisampled rasterizer of variant V: wide affine or perspective triangles take the
+/// vector loop of the draw's SIMD target (MsaaContext::spans), the rest the scalar one above,
+/// by the same rule as the one-sample loops (rasterizeTriangle in scalar_loop.hpp).
+template <class V>
+std::size_t rasterizeMsaaTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+    if constexpr (kHasSpanLoop<V>) {
+        const RasterizeFn spans = static_cast<const MsaaContext*>(context)->spans;
+        if (spans && setup.box.x1 - setup.box.x0 >= kNarrowBox) return spans(context, setup, p);
+    }
+    return rasterizeMsaa<V>(context, setup, p);
 }
 
 }  // namespace facet::detail

@@ -40,6 +40,12 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2] * dy);
 }
 
+/// The plane p at points (dx, dy) off the pixel grid, one per lane: Planes::eval lane by lane.
+HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, VecF dy) {
+    const Df d;
+    return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2]) * dy;
+}
+
 /// lightIntensity() and shade() lane by lane: the same operations in the same order, the
 /// specular power by unitPowLanes(), as the scalar loop's unitPow().
 HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
