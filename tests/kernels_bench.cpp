@@ -347,7 +347,7 @@ void shadeQuad(benchmark::State& state) {
     Framebuffer fb;
     fb.resize(kQuad, kQuad);
     fb.clear(0);
-    RasterContext ctx{&fb, &constants, 16, spanLoopFor<V>()};
+    RasterContext ctx{&fb, &constants, 16, spanLoopFor<V>(), blockLoopFor<V>()};
     std::size_t pixels = 0;
     for (auto _ : state) {
         state.PauseTiming();
@@ -377,7 +377,7 @@ void shadeOccluded(benchmark::State& state) {
     fb.resize(kQuad, kQuad);
     fb.clear(0);
     std::fill(fb.depth.begin(), fb.depth.end(), 0.0f);
-    RasterContext ctx{&fb, &constants, 16, spanLoopFor<PhongV>()};
+    RasterContext ctx{&fb, &constants, 16, spanLoopFor<PhongV>(), blockLoopFor<PhongV>()};
     std::size_t pixels = 0;
     for (auto _ : state) {
         pixels = 0;

@@ -1,6 +1,7 @@
-// One instantiation of every variant's span loop per SIMD target: hwy/foreach_target.h compiles
-// this file once for each target Highway enables, and HWY_DYNAMIC_DISPATCH picks the best one
-// the CPU has. The choice returns a plain function pointer, called once per triangle.
+// One instantiation of every variant's span and block loops per SIMD target:
+// hwy/foreach_target.h compiles this file once for each target Highway enables, and
+// HWY_DYNAMIC_DISPATCH picks the best one the CPU has. The choice returns plain function
+// pointers, called once per triangle.
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/span_targets.cpp"
@@ -24,6 +25,15 @@ RasterizeFn spanLoopOf(const VariantKey& key) {
     return loop;
 }
 
+RasterizeFn blockLoopOf(const VariantKey& key) {
+    RasterizeFn loop = nullptr;
+    dispatch(key, [&](auto variant) {
+        using V = decltype(variant);
+        if constexpr (kHasSpanLoop<V>) loop = &rasterizeBlocks<V>;
+    });
+    return loop;
+}
+
 const char* targetName() {
     return hwy::TargetName(HWY_TARGET);
 }
@@ -40,11 +50,17 @@ std::atomic<bool> gSpanLoops{true};
 }  // namespace
 
 HWY_EXPORT(spanLoopOf);
+HWY_EXPORT(blockLoopOf);
 HWY_EXPORT(targetName);
 
 RasterizeFn spanLoop(const VariantKey& key) {
     if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
     return HWY_DYNAMIC_DISPATCH(spanLoopOf)(key);
+}
+
+RasterizeFn blockLoop(const VariantKey& key) {
+    if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
+    return HWY_DYNAMIC_DISPATCH(blockLoopOf)(key);
 }
 
 std::int64_t spanTargetsCompiled() {

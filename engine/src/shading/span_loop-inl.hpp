@@ -1,8 +1,13 @@
-// The row-span vector triangle loop for the affine and perspective variants. Each row's covered
-// pixels are found exactly from the integer edge functions (coveredSpan, one division per edge
-// and row, no per-pixel test), then walked a vector at a time: depth, the depth test and the
-// interpolation weights are computed for all lanes at once, and only the pixels that pass the
-// test are shaded.
+// The vector triangle loops for the affine and perspective variants, one lane per pixel:
+//  - the row-span loop, for wide boxes: each row's covered pixels are found exactly from the
+//    integer edge functions (coveredSpan, one division per edge and row, no per-pixel test),
+//    then walked a vector at a time;
+//  - the block loop, for narrow boxes (a dense mesh's small triangles): the box is walked in 2D
+//    blocks of the vector's lane count (4×4 pixels on 16 lanes, 4×2 on 8, 4×1 on 4), and each
+//    lane tests its own pixel against the edge functions in 32-bit integers.
+// In both, depth, the depth test, the interpolation weights, the varyings and (when enough lanes
+// are live) the colour are computed for all lanes at once, and only the pixels that are covered
+// and pass the test are written.
 //
 // Written with Google Highway and compiled once per SIMD target (pipeline/span_targets.cpp);
 // the best target the CPU has is picked at run time, once per draw. Every lane does the same
@@ -35,9 +40,14 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 /// The plane p at the lanes' pixels: the scalar Planes::eval, lane by lane.
-HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
+HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, VecF dy) {
     const Df d;
-    return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2] * dy);
+    return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2]) * dy;
+}
+
+/// evalLanes() along one row (the same rounding: p[2]·dy is one product either way).
+HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
+    return evalLanes(p, dx, hn::Set(Df(), dy));
 }
 
 /// lightIntensity() and shade() lane by lane: the same operations in the same order, the
@@ -88,7 +98,71 @@ HWY_INLINE VecI colorLanes(const VecF* a, const DrawConstants& k) {
     return packColorLanes(rgb.x, rgb.y, rgb.z);
 }
 
-/// The triangle loop of an affine or perspective variant V without derivatives.
+/// The packed colours of all lanes at once, for a variant with kVectorColor or kVectorTexture.
+template <class V>
+HWY_INLINE VecI vectorColorLanes(const VecF* a, const DrawConstants& k) {
+    if constexpr (kVectorTexture<V>)
+        return bilinearPackedLanes(k.texture->level(0), a[V::kLayout.uvAt()],
+                                   a[V::kLayout.uvAt() + 1]);
+    else
+        return colorLanes<V>(a, k);
+}
+
+/// How many live lanes make shading all lanes at once pay off: any for a plain colour (a few
+/// lane operations), half for Phong lighting and texture lookups, whose lanes are dear: below
+/// that the scalar code shades the live lanes cheaper.
+template <class V>
+inline constexpr int kMinVectorLanes = kVectorColor<V> && !V::kLayout.phong ? 1 : (kLanes + 1) / 2;
+
+/// fragmentWeights() lane by lane for an affine or perspective variant: the weights (m1, m2) of
+/// vertices 1 and 2 at the lanes' pixels, `depth` = 1/q there.
+template <class V>
+HWY_INLINE void weightLanes(const Planes& p, VecF dx, VecF dy, VecF depth, VecF& m1, VecF& m2) {
+    if constexpr (V::kInterp == Interp::Affine) {
+        m1 = evalLanes(p.l1, dx, dy);
+        m2 = evalLanes(p.l2, dx, dy);
+    } else {
+        m1 = evalLanes(p.u1, dx, dy) * depth;
+        m2 = evalLanes(p.u2, dx, dy) * depth;
+    }
+}
+
+/// interpolateVaryings() lane by lane: V's varyings at weights (m1, m2) into a[0 … V::kCount).
+template <class V>
+HWY_INLINE void varyingLanes(const Planes& p, VecF m1, VecF m2, VecF* a) {
+    const Df d;
+    for (int j = 0; j < V::kCount; ++j)
+        a[j] = hn::Set(d, p.a0[j]) + m1 * hn::Set(d, p.d1[j]) + m2 * hn::Set(d, p.d2[j]);
+}
+
+/// The packed colours of the lanes set in `live` (bit i: lane i) into colors[], from their
+/// varyings a[]: all lanes at once when enough are live, else lane by lane through the scalar
+/// fragmentColor(). Nothing for the depth shader, which writes no colour.
+template <class V>
+HWY_INLINE void shadeLanes(const VecF* a, const DrawConstants& k, unsigned live,
+                           std::uint32_t* colors) {
+    if constexpr (V::kShader != ShaderKind::Depth) {
+        const Df d;
+        if constexpr (kVectorColor<V> || kVectorTexture<V>) {
+            if (std::popcount(live) >= kMinVectorLanes<V>) {
+                hn::Store(hn::BitCast(Du(), vectorColorLanes<V>(a, k)), Du(), colors);
+                return;
+            }
+        }
+        constexpr int kCount = V::kCount;
+        HWY_ALIGN float varyings[kCount > 0 ? kCount : 1][kLanes];
+        for (int j = 0; j < kCount; ++j) hn::Store(a[j], d, varyings[j]);
+        for (unsigned rest = live; rest != 0; rest &= rest - 1) {
+            const int i = std::countr_zero(rest);
+            float v[kCount > 0 ? kCount : 1];
+            for (int j = 0; j < kCount; ++j) v[j] = varyings[j][i];
+            colors[i] = packColor(fragmentColor<V>(v, k, 0.0f));
+        }
+    }
+}
+
+/// The triangle loop of an affine or perspective variant V without derivatives, for wide boxes:
+/// row spans.
 template <class V>
 HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setup,
                                         const Planes& p) {
@@ -109,7 +183,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setu
         const bool any = coveredSpan(row, setup.stepX, setup.box.x0, setup.box.x1, lo, hi);
         for (int i = 0; i < 3; ++i) row[i] += setup.stepY[i];
         if (!any) continue;
-        const auto dy = static_cast<float>(y - p.baseY);
+        const VecF dy = hn::Set(d, static_cast<float>(y - p.baseY));
         const std::size_t rowStart = fb.index(0, y);
 
         for (int x = lo; x <= hi; x += kLanes) {
@@ -133,54 +207,134 @@ HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setu
                 if (pass == 0) continue;
             }
             VecF m1, m2;
-            if constexpr (V::kInterp == Interp::Affine) {
-                m1 = evalLanes(p.l1, dx, dy);
-                m2 = evalLanes(p.l2, dx, dy);
-            } else {
-                m1 = evalLanes(p.u1, dx, dy) * depth;
-                m2 = evalLanes(p.u2, dx, dy) * depth;
-            }
+            weightLanes<V>(p, dx, dy, depth, m1, m2);
             VecF a[kCount > 0 ? kCount : 1];
-            for (int j = 0; j < kCount; ++j)
-                a[j] = hn::Set(d, p.a0[j]) + m1 * hn::Set(d, p.d1[j]) + m2 * hn::Set(d, p.d2[j]);
+            varyingLanes<V>(p, m1, m2, a);
             std::uint32_t* crow = fb.color.data() + rowStart + static_cast<std::size_t>(x);
-            HWY_ALIGN float depths[kLanes];
-            // All lanes at once pay off only when most are live: a dense mesh's small
-            // triangles leave one to three, which the scalar code below shades cheaper.
             if constexpr (kVectorColor<V> || kVectorTexture<V>) {
-                if (std::popcount(pass) >= kLanes / 2) {
-                    VecI c;
-                    if constexpr (kVectorTexture<V>)
-                        c = bilinearPackedLanes(k.texture->level(0), a[V::kLayout.uvAt()],
-                                                a[V::kLayout.uvAt() + 1]);
-                    else
-                        c = colorLanes<V>(a, k);
-                    if (pass == kAll) {  // the inside of a wide triangle: two plain stores
-                        if constexpr (depthTested(V::kShader)) hn::StoreU(depth, d, zrow);
-                        hn::StoreU(hn::BitCast(du, c), du, crow);
-                        continue;
-                    }
-                    HWY_ALIGN std::uint32_t colors[kLanes];
-                    hn::Store(hn::BitCast(du, c), du, colors);
-                    hn::Store(depth, d, depths);
-                    for (int i = 0; i < n; ++i) {
-                        if (!(pass >> i & 1u)) continue;
-                        if constexpr (depthTested(V::kShader)) zrow[i] = depths[i];
-                        crow[i] = colors[i];
-                    }
+                if (pass == kAll) {  // the inside of a wide triangle: two plain stores
+                    if constexpr (depthTested(V::kShader)) hn::StoreU(depth, d, zrow);
+                    hn::StoreU(hn::BitCast(du, vectorColorLanes<V>(a, k)), du, crow);
                     continue;
                 }
             }
-            HWY_ALIGN float varyings[kCount > 0 ? kCount : 1][kLanes];
-            for (int j = 0; j < kCount; ++j) hn::Store(a[j], d, varyings[j]);
+            HWY_ALIGN std::uint32_t colors[kLanes];
+            HWY_ALIGN float depths[kLanes];
+            shadeLanes<V>(a, k, pass, colors);
             hn::Store(depth, d, depths);
-            for (int i = 0; i < n; ++i) {
-                if (!(pass >> i & 1u)) continue;
-                float v[kCount > 0 ? kCount : 1];
-                for (int j = 0; j < kCount; ++j) v[j] = varyings[j][i];
+            for (unsigned rest = pass; rest != 0; rest &= rest - 1) {
+                const int i = std::countr_zero(rest);
                 if constexpr (depthTested(V::kShader)) zrow[i] = depths[i];
-                if constexpr (V::kShader != ShaderKind::Depth)
-                    crow[i] = packColor(fragmentColor<V>(v, k, 0.0f));
+                if constexpr (V::kShader != ShaderKind::Depth) crow[i] = colors[i];
+            }
+        }
+    }
+    return fragments;
+}
+
+/// Block width and height in pixels: the lanes of a vector as a 2D block, row-major (lane i is
+/// pixel (i mod kBlockW, i div kBlockW) of the block), as square as 4-pixel rows allow.
+inline constexpr int kBlockW = kLanes < kMaxBlockSide ? kLanes : kMaxBlockSide;
+inline constexpr int kBlockH = kLanes / kBlockW;
+static_assert(kBlockH <= kMaxBlockSide && kLanes <= 16, "a block fits in laneBits()' 16 bits");
+
+/// The lanes of a block's first `columns` columns and first `rows` rows: the block's part that
+/// lies in the box.
+inline unsigned blockLanes(int columns, int rows) {
+    unsigned row = (1u << columns) - 1u, bits = 0;
+    for (int r = 0; r < rows; ++r) bits |= row << (r * kBlockW);
+    return bits;
+}
+
+/// The triangle loop of an affine or perspective variant V without derivatives, for narrow boxes
+/// that fitsBlockLoop(): 2D blocks of pixels, one lane each. Coverage is forEachCovered()'s
+/// test, E ≥ 0 on all three edges (the top-left bias is in e0), done per lane in 32 bits.
+template <class V>
+HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& setup,
+                                         const Planes& p) {
+    static_assert(kHasSpanLoop<V>);
+    const Df d;
+    const Di di;
+    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
+    Framebuffer& fb = *ctx.fb;
+    const DrawConstants& k = *ctx.constants;
+    constexpr int kCount = V::kCount;
+    const std::size_t stride = static_cast<std::size_t>(fb.width);
+
+    // Each lane's pixel within the block, and its edge values relative to the block's first
+    // pixel: both exact (fitsBlockLoop() bounds the integers, and small integers are exact
+    // floats), so a lane's dx and dy are the scalar loop's.
+    HWY_ALIGN float laneX[kLanes], laneY[kLanes];
+    HWY_ALIGN std::int32_t laneEdge[3][kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+        const int ox = i % kBlockW, oy = i / kBlockW;
+        laneX[i] = static_cast<float>(ox);
+        laneY[i] = static_cast<float>(oy);
+        for (int e = 0; e < 3; ++e)
+            laneEdge[e][i] = static_cast<std::int32_t>(ox * setup.stepX[e] + oy * setup.stepY[e]);
+    }
+    const VecF offsetX = hn::Load(d, laneX), offsetY = hn::Load(d, laneY);
+    const VecI edge0 = hn::Load(di, laneEdge[0]), edge1 = hn::Load(di, laneEdge[1]),
+               edge2 = hn::Load(di, laneEdge[2]);
+    const int width = setup.box.x1 - setup.box.x0 + 1;
+    const int height = setup.box.y1 - setup.box.y0 + 1;
+    std::size_t fragments = 0;
+
+    std::int64_t blockRow[3] = {setup.e0[0], setup.e0[1], setup.e0[2]};
+    for (int by = 0; by < height; by += kBlockH) {
+        const int y = setup.box.y0 + by;
+        const int rows = std::min(kBlockH, height - by);
+        const VecF dy = hn::Set(d, static_cast<float>(y - p.baseY)) + offsetY;
+        std::int64_t e[3] = {blockRow[0], blockRow[1], blockRow[2]};
+        for (int i = 0; i < 3; ++i) blockRow[i] += kBlockH * setup.stepY[i];
+
+        for (int bx = 0; bx < width; bx += kBlockW) {
+            const int columns = std::min(kBlockW, width - bx);
+            // Negative on some edge: outside (the sign bit of the OR of the three).
+            const VecI outside = (hn::Set(di, static_cast<std::int32_t>(e[0])) + edge0) |
+                                 (hn::Set(di, static_cast<std::int32_t>(e[1])) + edge1) |
+                                 (hn::Set(di, static_cast<std::int32_t>(e[2])) + edge2);
+            for (int i = 0; i < 3; ++i) e[i] += kBlockW * setup.stepX[i];
+            const unsigned covered =
+                blockLanes(columns, rows) & ~laneBits(hn::RebindMask(d, outside < hn::Zero(di)));
+            if (covered == 0) continue;
+            fragments += static_cast<std::size_t>(std::popcount(covered));
+
+            const int x = setup.box.x0 + bx;
+            const VecF dx = hn::Set(d, static_cast<float>(x - p.baseX)) + offsetX;
+            const VecF depth = hn::Set(d, 1.0f) / evalLanes(p.q, dx, dy);
+            const std::size_t first = fb.index(x, y);
+            float* zblock = fb.depth.data() + first;
+            unsigned pass = covered;
+            if constexpr (depthTested(V::kShader)) {
+                // Only the box's pixels are read: the rest may be another thread's tile.
+                HWY_ALIGN float z[kLanes] = {};
+                const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(columns);
+                for (int r = 0; r < rows; ++r) {
+                    const float* src = zblock + static_cast<std::size_t>(r) * stride;
+                    if (columns == kBlockW)
+                        std::memcpy(z + r * kBlockW, src, sizeof(float) * kBlockW);
+                    else
+                        std::memcpy(z + r * kBlockW, src, bytes);
+                }
+                pass &= laneBits(depth < hn::Load(d, z));
+                if (pass == 0) continue;
+            }
+            VecF m1, m2;
+            weightLanes<V>(p, dx, dy, depth, m1, m2);
+            VecF a[kCount > 0 ? kCount : 1];
+            varyingLanes<V>(p, m1, m2, a);
+            HWY_ALIGN std::uint32_t colors[kLanes];
+            HWY_ALIGN float depths[kLanes];
+            shadeLanes<V>(a, k, pass, colors);
+            hn::Store(depth, d, depths);
+            std::uint32_t* cblock = fb.color.data() + first;
+            for (unsigned rest = pass; rest != 0; rest &= rest - 1) {
+                const int i = std::countr_zero(rest);
+                const std::size_t at = static_cast<std::size_t>(i / kBlockW) * stride +
+                                       static_cast<std::size_t>(i % kBlockW);
+                if constexpr (depthTested(V::kShader)) zblock[at] = depths[i];
+                if constexpr (V::kShader != ShaderKind::Depth) cblock[at] = colors[i];
             }
         }
     }
