@@ -236,6 +236,8 @@ HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setu
 /// pixel (i mod kBlockW, i div kBlockW) of the block), as square as 4-pixel rows allow.
 inline constexpr int kBlockW = kLanes < kMaxBlockSide ? kLanes : kMaxBlockSide;
 inline constexpr int kBlockH = kLanes / kBlockW;
+/// log2(kBlockW): lane i is in the block's row i >> kBlockShift.
+inline constexpr int kBlockShift = std::countr_zero(static_cast<unsigned>(kBlockW));
 static_assert(kBlockH <= kMaxBlockSide && kLanes <= 16, "a block fits in laneBits()' 16 bits");
 
 /// The lanes of a block's first `columns` columns and first `rows` rows: the block's part that
@@ -244,6 +246,35 @@ inline unsigned blockLanes(int columns, int rows) {
     unsigned row = (1u << columns) - 1u, bits = 0;
     for (int r = 0; r < rows; ++r) bits |= row << (r * kBlockW);
     return bits;
+}
+
+/// Lane i's pixel in a block, from the block's first pixel in a framebuffer `width` wide.
+inline std::size_t blockPixel(int i, int width) {
+    return static_cast<std::size_t>(i >> kBlockShift) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(i & (kBlockW - 1));
+}
+
+/// The depths stored at a block's pixels, from its first pixel `first` in a framebuffer `width`
+/// wide; lane i's pixel is offsets[i] = blockPixel(i, width) past it. Only the `covered` lanes'
+/// values matter, and only pixels in the box (the first `columns` of each row) are read: the rest
+/// may be another thread's tile, or past the frame. A one-row block is a plain load; taller ones
+/// gather, since a copy through the stack would stall on store forwarding, with every other lane
+/// reading the first covered pixel instead of its own.
+HWY_INLINE VecF blockDepths(const float* first, int width, VecI offsets, unsigned covered,
+                            int columns) {
+    const Df d;
+    if constexpr (kBlockH == 1) {
+        if (columns == kBlockW) return hn::LoadU(d, first);
+        HWY_ALIGN float part[kLanes] = {};
+        std::memcpy(part, first, sizeof(float) * static_cast<std::size_t>(columns));
+        return hn::Load(d, part);
+    } else {
+        const std::uint8_t bits[8] = {static_cast<std::uint8_t>(covered),
+                                      static_cast<std::uint8_t>(covered >> 8)};
+        const hn::Mask<Di> live = hn::RebindMask(Di(), hn::LoadMaskBits(d, bits));
+        const auto safe = static_cast<std::int32_t>(blockPixel(std::countr_zero(covered), width));
+        return hn::GatherIndex(d, first, hn::IfThenElse(live, offsets, hn::Set(Di(), safe)));
+    }
 }
 
 /// The triangle loop of an affine or perspective variant V without derivatives, for narrow boxes
@@ -259,23 +290,22 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
-    const std::size_t stride = static_cast<std::size_t>(fb.width);
 
-    // Each lane's pixel within the block, and its edge values relative to the block's first
-    // pixel: both exact (fitsBlockLoop() bounds the integers, and small integers are exact
-    // floats), so a lane's dx and dy are the scalar loop's.
-    HWY_ALIGN float laneX[kLanes], laneY[kLanes];
-    HWY_ALIGN std::int32_t laneEdge[3][kLanes];
-    for (int i = 0; i < kLanes; ++i) {
-        const int ox = i % kBlockW, oy = i / kBlockW;
-        laneX[i] = static_cast<float>(ox);
-        laneY[i] = static_cast<float>(oy);
-        for (int e = 0; e < 3; ++e)
-            laneEdge[e][i] = static_cast<std::int32_t>(ox * setup.stepX[e] + oy * setup.stepY[e]);
-    }
-    const VecF offsetX = hn::Load(d, laneX), offsetY = hn::Load(d, laneY);
-    const VecI edge0 = hn::Load(di, laneEdge[0]), edge1 = hn::Load(di, laneEdge[1]),
-               edge2 = hn::Load(di, laneEdge[2]);
+    // Each lane's pixel (ox, oy) within the block, its place in the framebuffer and its edge
+    // values relative to the block's first pixel: all exact (fitsBlockLoop() bounds the
+    // integers, and small integers are exact floats), so a lane's dx and dy are the scalar
+    // loop's. Computed in lanes: a table written lane by lane and read back as a vector would
+    // stall on store forwarding, once per triangle.
+    const VecI lane = hn::Iota(di, 0);
+    const VecI ox = hn::And(lane, hn::Set(di, kBlockW - 1));
+    const VecI oy = hn::ShiftRight<kBlockShift>(lane);
+    const VecF offsetX = hn::ConvertTo(d, ox), offsetY = hn::ConvertTo(d, oy);
+    const VecI laneOffset = oy * hn::Set(di, fb.width) + ox;
+    const auto edgeOffsets = [&](int i) HWY_ATTR {
+        return ox * hn::Set(di, static_cast<std::int32_t>(setup.stepX[i])) +
+               oy * hn::Set(di, static_cast<std::int32_t>(setup.stepY[i]));
+    };
+    const VecI edge0 = edgeOffsets(0), edge1 = edgeOffsets(1), edge2 = edgeOffsets(2);
     const int width = setup.box.x1 - setup.box.x0 + 1;
     const int height = setup.box.y1 - setup.box.y0 + 1;
     std::size_t fragments = 0;
@@ -307,17 +337,8 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
             float* zblock = fb.depth.data() + first;
             unsigned pass = covered;
             if constexpr (depthTested(V::kShader)) {
-                // Only the box's pixels are read: the rest may be another thread's tile.
-                HWY_ALIGN float z[kLanes] = {};
-                const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(columns);
-                for (int r = 0; r < rows; ++r) {
-                    const float* src = zblock + static_cast<std::size_t>(r) * stride;
-                    if (columns == kBlockW)
-                        std::memcpy(z + r * kBlockW, src, sizeof(float) * kBlockW);
-                    else
-                        std::memcpy(z + r * kBlockW, src, bytes);
-                }
-                pass &= laneBits(depth < hn::Load(d, z));
+                pass &=
+                    laneBits(depth < blockDepths(zblock, fb.width, laneOffset, covered, columns));
                 if (pass == 0) continue;
             }
             VecF m1, m2;
@@ -331,8 +352,7 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
             std::uint32_t* cblock = fb.color.data() + first;
             for (unsigned rest = pass; rest != 0; rest &= rest - 1) {
                 const int i = std::countr_zero(rest);
-                const std::size_t at = static_cast<std::size_t>(i / kBlockW) * stride +
-                                       static_cast<std::size_t>(i % kBlockW);
+                const std::size_t at = blockPixel(i, fb.width);
                 if constexpr (depthTested(V::kShader)) zblock[at] = depths[i];
                 if constexpr (V::kShader != ShaderKind::Depth) cblock[at] = colors[i];
             }
