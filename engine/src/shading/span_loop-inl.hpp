@@ -257,18 +257,35 @@ inline std::size_t blockPixel(int i, int width) {
 /// The depths stored at a block's pixels, from its first pixel `first` in a framebuffer `width`
 /// wide; lane i's pixel is offsets[i] = blockPixel(i, width) past it. Only the `covered` lanes'
 /// values matter, and only pixels in the box (the first `columns` of each row) are read: the rest
-/// may be another thread's tile, or past the frame. A one-row block is a plain load; taller ones
-/// gather, since a copy through the stack would stall on store forwarding, with every other lane
-/// reading the first covered pixel instead of its own.
+/// may be another thread's tile, or past the frame. A one-row block is a plain load; a 4×4 block
+/// on a target whose masked loads touch no masked-off memory (AVX-512) is four masked row loads;
+/// other blocks gather, with every lane outside the triangle reading its first covered pixel
+/// instead of its own. (A copy through the stack would stall on store forwarding.)
 HWY_INLINE VecF blockDepths(const float* first, int width, VecI offsets, unsigned covered,
-                            int columns) {
+                            int columns, [[maybe_unused]] int rows) {
     const Df d;
     if constexpr (kBlockH == 1) {
         if (columns == kBlockW) return hn::LoadU(d, first);
         HWY_ALIGN float part[kLanes] = {};
         std::memcpy(part, first, sizeof(float) * static_cast<std::size_t>(columns));
         return hn::Load(d, part);
-    } else {
+    }
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+    else if constexpr (kBlockW == 4 && kBlockH == 4) {
+        static_assert(!HWY_MEM_OPS_MIGHT_FAULT, "masked-off lanes must not be read");
+        const hn::Full128<float> d4;
+        const hn::Half<Df> d8;
+        const auto inRow = hn::FirstN(d4, static_cast<std::size_t>(columns));
+        const auto row = [&](int r) HWY_ATTR {
+            return r < rows ? hn::MaskedLoad(inRow, d4,
+                                             first + static_cast<std::size_t>(r) *
+                                                         static_cast<std::size_t>(width))
+                            : hn::Zero(d4);
+        };
+        return hn::Combine(d, hn::Combine(d8, row(3), row(2)), hn::Combine(d8, row(1), row(0)));
+    }
+#endif
+    else {
         const std::uint8_t bits[8] = {static_cast<std::uint8_t>(covered),
                                       static_cast<std::uint8_t>(covered >> 8)};
         const hn::Mask<Di> live = hn::RebindMask(Di(), hn::LoadMaskBits(d, bits));
@@ -337,8 +354,8 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
             float* zblock = fb.depth.data() + first;
             unsigned pass = covered;
             if constexpr (depthTested(V::kShader)) {
-                pass &=
-                    laneBits(depth < blockDepths(zblock, fb.width, laneOffset, covered, columns));
+                pass &= laneBits(depth <
+                                 blockDepths(zblock, fb.width, laneOffset, covered, columns, rows));
                 if (pass == 0) continue;
             }
             VecF m1, m2;
