@@ -294,6 +294,46 @@ HWY_INLINE VecF blockDepths(const float* first, int width, VecI offsets, unsigne
     }
 }
 
+/// Whether 4×4 blocks are written row by row with masked stores, which on AVX-512 touch no
+/// masked-off pixel (HWY_MEM_OPS_MIGHT_FAULT is 0 there); elsewhere pixel by pixel.
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+inline constexpr bool kMaskedRows = kBlockW == 4 && kBlockH == 4;
+#else
+inline constexpr bool kMaskedRows = false;
+#endif
+
+/// Writes the `pass` lanes of a block of variant V, depths (when tested) and packed colours, from
+/// its first pixel (z, c) in a framebuffer `width` wide: one masked store per row and buffer.
+/// Only where kMaskedRows.
+template <class V>
+HWY_INLINE void storeBlockRows([[maybe_unused]] VecF depth, [[maybe_unused]] VecI color,
+                               [[maybe_unused]] unsigned pass, [[maybe_unused]] float* z,
+                               [[maybe_unused]] std::uint32_t* c, [[maybe_unused]] int width) {
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+    static_assert(!HWY_MEM_OPS_MIGHT_FAULT, "masked-off lanes must not be written");
+    const hn::Full128<float> d4;
+    const hn::Full128<std::uint32_t> du4;
+    const hn::Half<Df> d8;
+    const hn::Half<Du> du8;
+    const auto colors = hn::BitCast(Du(), color);
+    const auto z01 = hn::LowerHalf(d8, depth), z23 = hn::UpperHalf(d8, depth);
+    const auto c01 = hn::LowerHalf(du8, colors), c23 = hn::UpperHalf(du8, colors);
+    const hn::Vec<decltype(d4)> zr[4] = {hn::LowerHalf(d4, z01), hn::UpperHalf(d4, z01),
+                                         hn::LowerHalf(d4, z23), hn::UpperHalf(d4, z23)};
+    const hn::Vec<decltype(du4)> cr[4] = {hn::LowerHalf(du4, c01), hn::UpperHalf(du4, c01),
+                                          hn::LowerHalf(du4, c23), hn::UpperHalf(du4, c23)};
+    for (int r = 0; r < 4; ++r) {
+        const std::uint8_t bits[8] = {static_cast<std::uint8_t>(pass >> (4 * r) & 0xFu)};
+        if (bits[0] == 0) continue;
+        const auto live = hn::LoadMaskBits(d4, bits);
+        const std::size_t row = static_cast<std::size_t>(r) * static_cast<std::size_t>(width);
+        if constexpr (depthTested(V::kShader)) hn::BlendedStore(zr[r], live, d4, z + row);
+        if constexpr (V::kShader != ShaderKind::Depth)
+            hn::BlendedStore(cr[r], hn::RebindMask(du4, live), du4, c + row);
+    }
+#endif
+}
+
 /// The triangle loop of an affine or perspective variant V without derivatives, for narrow boxes
 /// that fitsBlockLoop(): 2D blocks of pixels, one lane each. Coverage is forEachCovered()'s
 /// test, E ≥ 0 on all three edges (the top-left bias is in e0), done per lane in 32 bits.
@@ -326,6 +366,9 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
     const int width = setup.box.x1 - setup.box.x0 + 1;
     const int height = setup.box.y1 - setup.box.y0 + 1;
     std::size_t fragments = 0;
+    // Without varyings the colour is the same at every pixel: packed once per triangle.
+    VecI flat = hn::Zero(di);
+    if constexpr (kCount == 0 && kVectorColor<V>) flat = colorLanes<V>(nullptr, k);
 
     std::int64_t blockRow[3] = {setup.e0[0], setup.e0[1], setup.e0[2]};
     for (int by = 0; by < height; by += kBlockH) {
@@ -362,11 +405,17 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
             weightLanes<V>(p, dx, dy, depth, m1, m2);
             VecF a[kCount > 0 ? kCount : 1];
             varyingLanes<V>(p, m1, m2, a);
+            std::uint32_t* cblock = fb.color.data() + first;
+            if constexpr (kMaskedRows && kVectorColor<V> && kMinVectorLanes<V> == 1) {
+                // Every block is shaded all lanes at once: the colours stay in a vector.
+                storeBlockRows<V>(depth, kCount == 0 ? flat : colorLanes<V>(a, k), pass, zblock,
+                                  cblock, fb.width);
+                continue;
+            }
             HWY_ALIGN std::uint32_t colors[kLanes];
             HWY_ALIGN float depths[kLanes];
             shadeLanes<V>(a, k, pass, colors);
             hn::Store(depth, d, depths);
-            std::uint32_t* cblock = fb.color.data() + first;
             for (unsigned rest = pass; rest != 0; rest &= rest - 1) {
                 const int i = std::countr_zero(rest);
                 const std::size_t at = blockPixel(i, fb.width);

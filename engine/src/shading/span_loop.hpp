@@ -30,7 +30,8 @@ inline constexpr int kMaxBlockSide = 4;
 /// value it forms over the box padded to whole blocks (block corner plus lane offset) must fit.
 /// The bound is the triangle inequality on E(x, y) = e0 + i·stepX + j·stepY; small triangles
 /// pass by orders of magnitude, big ones clipped to a small box may not (then: scalar loop).
-inline bool fitsBlockLoop(const CoverageSetup& s) {
+/// Always inline: it runs once per small triangle; out of line it cost 7 % of the block loop.
+[[gnu::always_inline]] inline bool fitsBlockLoop(const CoverageSetup& s) {
     const std::int64_t columns = s.box.x1 - s.box.x0 + kMaxBlockSide;
     const std::int64_t rows = s.box.y1 - s.box.y0 + kMaxBlockSide;
     constexpr std::int64_t kMax = std::numeric_limits<std::int32_t>::max();
