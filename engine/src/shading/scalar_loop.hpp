@@ -156,16 +156,18 @@ template <class V>
 
 /// The triangle rasterizer of variant V: affine or perspective triangles take a vector loop of
 /// the draw's SIMD target, the span loop for wide boxes (RasterContext::spans) and the block loop
-/// for narrow ones (RasterContext::blocks) when its 32-bit edge values suffice; the rest take
-/// the scalar loop. Each is kept out of line so that it is optimised (and its shading inlined)
-/// on its own.
+/// for narrow ones (RasterContext::blocks) when not tiny and its 32-bit edge values suffice; the
+/// rest take the scalar loop. Each is kept out of line so that it is optimised (and its shading
+/// inlined) on its own.
 template <class V>
 std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
     if constexpr (kHasSpanLoop<V>) {
         const RasterContext& ctx = *static_cast<const RasterContext*>(context);
         if (setup.box.x1 - setup.box.x0 >= kNarrowBox) {
             if (ctx.spans) return ctx.spans(context, setup, p);
-        } else if (ctx.blocks && fitsBlockLoop(setup)) {
+        } else if (ctx.blocks &&
+                   setup.box.x1 - setup.box.x0 + setup.box.y1 - setup.box.y0 + 2 >= kTinyBox &&
+                   fitsBlockLoop(setup)) {
             return ctx.blocks(context, setup, p);
         }
     }
