@@ -347,7 +347,7 @@ void shadeQuad(benchmark::State& state) {
     Framebuffer fb;
     fb.resize(kQuad, kQuad);
     fb.clear(0);
-    RasterContext ctx{&fb, &constants, 16, spanLoopFor<V>()};
+    RasterContext ctx{&fb, &constants, 16, spanLoopFor<V>(), blockLoopFor<V>()};
     std::size_t pixels = 0;
     for (auto _ : state) {
         state.PauseTiming();
@@ -368,6 +368,78 @@ BENCHMARK_TEMPLATE(shadeQuad, BilinearV)->Name("shade/textureBilinear");
 BENCHMARK_TEMPLATE(shadeQuad, TrilinearV)->Name("shade/textureTrilinear");
 BENCHMARK_TEMPLATE(shadeQuad, TexturePhongV)->Name("shade/texturePhongCombine");
 
+/// The same quad as a grid of 4×4-pixel cells, two triangles each (8,192 triangles of 8 pixels,
+/// about a dense mesh's size: the bunny's average 7), with every varying interpolated across
+/// the quad as in quadTriangles().
+std::vector<Emitted> smallTriangles(const VaryingLayout& layout) {
+    constexpr int kCells = kQuad / 4;
+    std::vector<glm::vec4> clip;
+    std::vector<glm::vec3> colors, normals, positions;
+    std::vector<glm::vec2> uvs;
+    for (int j = 0; j <= kCells; ++j)
+        for (int i = 0; i <= kCells; ++i) {
+            const float u = static_cast<float>(i) / kCells, v = static_cast<float>(j) / kCells;
+            const float w = 1.0f / (1.0f - 0.2f * u - 0.2f * v);  // the quad's 1/w: 1 to 0.6
+            clip.emplace_back(u * kQuad * w, v * kQuad * w, w, w);
+            colors.emplace_back(1.0f - 0.8f * u, 0.2f + 0.7f * v, 0.1f + 0.8f * u * v);
+            uvs.emplace_back(u, v);
+            normals.emplace_back(0.6f * u - 0.3f, 0.6f * v - 0.3f, -0.906f);
+            positions.emplace_back(2.0f * u - 1.0f, 2.0f * v - 1.0f, 0.0f);
+        }
+    std::vector<std::uint32_t> indices;
+    for (int j = 0; j < kCells; ++j)
+        for (int i = 0; i < kCells; ++i) {
+            const auto at = [&](int di, int dj) {
+                return static_cast<std::uint32_t>((j + dj) * (kCells + 1) + i + di);
+            };
+            indices.insert(indices.end(),
+                           {at(0, 0), at(1, 0), at(1, 1), at(0, 0), at(1, 1), at(0, 1)});
+        }
+    DrawInput in{.clip = clip,
+                 .colors = colors,
+                 .uvs = uvs,
+                 .normals = normals,
+                 .positions = positions,
+                 .indices = indices};
+    std::vector<Emitted> out;
+    RenderStats stats;
+    drawTriangles(in, layout, false, kQuad, kQuad, 0, indices.size() / 3, &keepEmit, &out, stats);
+    return out;
+}
+
+// rasterizeTriangle<V> on the small triangles, with the vector loops of the best target or
+// without (the scalar loop): their ratio in one run is what the block loop gains.
+template <class V, bool Vector>
+void shadeSmall(benchmark::State& state) {
+    const std::vector<Emitted> tris = smallTriangles(V::kLayout);
+    const DrawConstants constants = benchConstants();
+    Framebuffer fb;
+    fb.resize(kQuad, kQuad);
+    fb.clear(0);
+    RasterContext ctx{&fb, &constants, 16, Vector ? spanLoopFor<V>() : nullptr,
+                      Vector ? blockLoopFor<V>() : nullptr};
+    std::size_t pixels = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        std::fill(fb.depth.begin(), fb.depth.end(), kEmptyDepth);
+        state.ResumeTiming();
+        pixels = 0;
+        for (const Emitted& t : tris) pixels += rasterizeTriangle<V>(&ctx, t.setup, t.planes);
+    }
+    benchmark::DoNotOptimize(fb.color.data());
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pixels));
+    if (pixels != static_cast<std::size_t>(kQuad) * kQuad)
+        state.SkipWithError("the grid does not cover exactly 256x256 pixels");
+}
+BENCHMARK_TEMPLATE(shadeSmall, PainterV, false)->Name("shadeSmall/painter/scalar");
+BENCHMARK_TEMPLATE(shadeSmall, PainterV, true)->Name("shadeSmall/painter/vector");
+BENCHMARK_TEMPLATE(shadeSmall, GouraudV, false)->Name("shadeSmall/gouraud/scalar");
+BENCHMARK_TEMPLATE(shadeSmall, GouraudV, true)->Name("shadeSmall/gouraud/vector");
+BENCHMARK_TEMPLATE(shadeSmall, PhongV, false)->Name("shadeSmall/phong/scalar");
+BENCHMARK_TEMPLATE(shadeSmall, PhongV, true)->Name("shadeSmall/phong/vector");
+BENCHMARK_TEMPLATE(shadeSmall, BilinearV, false)->Name("shadeSmall/textureBilinear/scalar");
+BENCHMARK_TEMPLATE(shadeSmall, BilinearV, true)->Name("shadeSmall/textureBilinear/vector");
+
 // The same quad behind what is already drawn: early depth rejects every pixel, so this is the
 // cost of coverage and the depth test alone (overdraw that loses).
 void shadeOccluded(benchmark::State& state) {
@@ -377,7 +449,7 @@ void shadeOccluded(benchmark::State& state) {
     fb.resize(kQuad, kQuad);
     fb.clear(0);
     std::fill(fb.depth.begin(), fb.depth.end(), 0.0f);
-    RasterContext ctx{&fb, &constants, 16, spanLoopFor<PhongV>()};
+    RasterContext ctx{&fb, &constants, 16, spanLoopFor<PhongV>(), blockLoopFor<PhongV>()};
     std::size_t pixels = 0;
     for (auto _ : state) {
         pixels = 0;

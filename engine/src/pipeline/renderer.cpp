@@ -157,6 +157,7 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
     const int threads = resolveThreads(settings.threads);
     const RasterizeFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
+    const RasterizeFn blocks = blockLoop(key);
     // Multisampling draws triangles into the per-sample buffer, which starts as the frame's
     // pixels and is resolved back into it; lines and points stay one sample (README).
     const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
@@ -172,7 +173,7 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
             using V = decltype(variant);
             switch (settings.mode) {
                 case DrawMode::Solid: {
-                    RasterContext ctx{&frame, &constants, subdivision, spans};
+                    RasterContext ctx{&frame, &constants, subdivision, spans, blocks};
                     impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
                                       frame.height, &rasterizeTriangle<V>, &ctx, threads,
                                       clampedSubPixelBits(settings), stats);

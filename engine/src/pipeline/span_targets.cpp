@@ -1,7 +1,7 @@
-// One instantiation of every variant's span loop and multisampled span loop per SIMD target:
+// One instantiation of every variant's span, block and multisampled span loops per SIMD target:
 // hwy/foreach_target.h compiles this file once for each target Highway enables, and
-// HWY_DYNAMIC_DISPATCH picks the best one the CPU has. The choice returns a plain function pointer,
-// called once per triangle.
+// HWY_DYNAMIC_DISPATCH picks the best one the CPU has. The choice returns plain function
+// pointers, called once per triangle.
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/span_targets.cpp"
@@ -22,6 +22,15 @@ RasterizeFn spanLoopOf(const VariantKey& key) {
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
         if constexpr (kHasSpanLoop<V>) loop = &rasterizeSpans<V>;
+    });
+    return loop;
+}
+
+RasterizeFn blockLoopOf(const VariantKey& key) {
+    RasterizeFn loop = nullptr;
+    dispatch(key, [&](auto variant) {
+        using V = decltype(variant);
+        if constexpr (kHasSpanLoop<V>) loop = &rasterizeBlocks<V>;
     });
     return loop;
 }
@@ -51,12 +60,18 @@ std::atomic<bool> gSpanLoops{true};
 }  // namespace
 
 HWY_EXPORT(spanLoopOf);
+HWY_EXPORT(blockLoopOf);
 HWY_EXPORT(msaaLoopOf);
 HWY_EXPORT(targetName);
 
 RasterizeFn spanLoop(const VariantKey& key) {
     if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
     return HWY_DYNAMIC_DISPATCH(spanLoopOf)(key);
+}
+
+RasterizeFn blockLoop(const VariantKey& key) {
+    if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
+    return HWY_DYNAMIC_DISPATCH(blockLoopOf)(key);
 }
 
 RasterizeFn msaaSpanLoop(const VariantKey& key) {

@@ -1,5 +1,5 @@
 #pragma once
-// The vector span loops, compiled once per SIMD target (SSE4, AVX2, AVX-512 and Highway's
+// The vector span and block loops, compiled once per SIMD target (SSE4, AVX2, AVX-512 and Highway's
 // portable fallback on x86), and the run-time choice among them: once per draw, never per pixel.
 
 #include <cstdint>
@@ -14,6 +14,10 @@ namespace facet::detail {
 /// variant has none (subdivided interpolation, trilinear filtering).
 RasterizeFn spanLoop(const VariantKey& key);
 
+/// The block loop (small triangles, span_loop-inl.hpp) of `key`'s variant for the same target
+/// as spanLoop(); null exactly when spanLoop() is.
+RasterizeFn blockLoop(const VariantKey& key);
+
 /// The multisampled span loop (msaa_loop-inl.hpp; its context an MsaaContext) of `key`'s
 /// variant for the same target as spanLoop(); null when the variant has none.
 RasterizeFn msaaSpanLoop(const VariantKey& key);
@@ -24,15 +28,21 @@ const char* spanTarget();
 /// The Highway targets (HWY_* bits) the span loops were compiled for.
 std::int64_t spanTargetsCompiled();
 
-/// Turns the span loops off (spanLoop() and msaaSpanLoop() return null: every triangle takes the
-/// scalar loop) or back on, for the whole process: the scalar loop is the reference the vector
-/// targets must equal bit for bit. Not for use while a draw runs.
+/// Turns the vector loops off (spanLoop(), blockLoop() and msaaSpanLoop() return null: every
+/// triangle takes the scalar loop) or back on, for the whole process: the scalar loop is the
+/// reference the vector targets must equal bit for bit. Not for use while a draw runs.
 void enableSpanLoops(bool enabled);
 
 /// spanLoop() for a compile-time Variant.
 template <class V>
 RasterizeFn spanLoopFor() {
     return spanLoop({V::kShader, V::kInterp, V::kLayout, V::kFilter, V::kCombine});
+}
+
+/// blockLoop() for a compile-time Variant.
+template <class V>
+RasterizeFn blockLoopFor() {
+    return blockLoop({V::kShader, V::kInterp, V::kLayout, V::kFilter, V::kCombine});
 }
 
 }  // namespace facet::detail

@@ -54,6 +54,8 @@ struct RasterContext {
     int subdivision;  ///< N of Interp::Subdivided
     /// The variant's span loop for the SIMD target picked for this draw; null: scalar only.
     RasterizeFn spans = nullptr;
+    /// The variant's block loop (small triangles) for the same target; null: scalar only.
+    RasterizeFn blocks = nullptr;
 };
 
 /// Rounds a colour to 8 bits per channel as the conventions say; NaN becomes 0.

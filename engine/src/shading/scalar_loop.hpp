@@ -154,14 +154,22 @@ template <class V>
     return fragments;
 }
 
-/// The triangle rasterizer of variant V: wide affine or perspective triangles take the vector
-/// span loop of the draw's SIMD target (RasterContext::spans), the rest the scalar one. Both are
-/// kept out of line so that each is optimised (and its shading inlined) on its own.
+/// The triangle rasterizer of variant V: affine or perspective triangles take a vector loop of
+/// the draw's SIMD target, the span loop for wide boxes (RasterContext::spans) and the block loop
+/// for narrow ones (RasterContext::blocks) when not tiny and its 32-bit edge values suffice; the
+/// rest take the scalar loop. Each is kept out of line so that it is optimised (and its shading
+/// inlined) on its own.
 template <class V>
 std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
     if constexpr (kHasSpanLoop<V>) {
-        const RasterizeFn spans = static_cast<const RasterContext*>(context)->spans;
-        if (spans && setup.box.x1 - setup.box.x0 >= kNarrowBox) return spans(context, setup, p);
+        const RasterContext& ctx = *static_cast<const RasterContext*>(context);
+        if (setup.box.x1 - setup.box.x0 >= kNarrowBox) {
+            if (ctx.spans) return ctx.spans(context, setup, p);
+        } else if (ctx.blocks &&
+                   setup.box.x1 - setup.box.x0 + setup.box.y1 - setup.box.y0 + 2 >= kTinyBox &&
+                   fitsBlockLoop(setup)) {
+            return ctx.blocks(context, setup, p);
+        }
     }
     return rasterizeScalar<V>(context, setup, p);
 }

@@ -1,8 +1,13 @@
-// The row-span vector triangle loop for the affine and perspective variants. Each row's covered
-// pixels are found exactly from the integer edge functions (coveredSpan, one division per edge
-// and row, no per-pixel test), then walked a vector at a time: depth, the depth test and the
-// interpolation weights are computed for all lanes at once, and only the pixels that pass the
-// test are shaded.
+// The vector triangle loops for the affine and perspective variants, one lane per pixel:
+//  - the row-span loop, for wide boxes: each row's covered pixels are found exactly from the
+//    integer edge functions (coveredSpan, one division per edge and row, no per-pixel test),
+//    then walked a vector at a time;
+//  - the block loop, for narrow boxes (a dense mesh's small triangles): the box is walked in 2D
+//    blocks of the vector's lane count (4×4 pixels on 16 lanes, 4×2 on 8, 4×1 on 4), and each
+//    lane tests its own pixel against the edge functions in 32-bit integers.
+// In both, depth, the depth test, the interpolation weights, the varyings and (when enough lanes
+// are live) the colour are computed for all lanes at once, and only the pixels that are covered
+// and pass the test are written.
 //
 // Written with Google Highway and compiled once per SIMD target (pipeline/span_targets.cpp);
 // the best target the CPU has is picked at run time, once per draw. Every lane does the same
@@ -35,9 +40,14 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 /// The plane p at the lanes' pixels: the scalar Planes::eval, lane by lane.
-HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
+HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, VecF dy) {
     const Df d;
-    return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2] * dy);
+    return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2]) * dy;
+}
+
+/// evalLanes() along one row (the same rounding: p[2]·dy is one product either way).
+HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
+    return evalLanes(p, dx, hn::Set(Df(), dy));
 }
 
 /// The plane p at points (dx, dy) off the pixel grid, one per lane: Planes::eval lane by lane.
@@ -94,7 +104,71 @@ HWY_INLINE VecI colorLanes(const VecF* a, const DrawConstants& k) {
     return packColorLanes(rgb.x, rgb.y, rgb.z);
 }
 
-/// The triangle loop of an affine or perspective variant V without derivatives.
+/// The packed colours of all lanes at once, for a variant with kVectorColor or kVectorTexture.
+template <class V>
+HWY_INLINE VecI vectorColorLanes(const VecF* a, const DrawConstants& k) {
+    if constexpr (kVectorTexture<V>)
+        return bilinearPackedLanes(k.texture->level(0), a[V::kLayout.uvAt()],
+                                   a[V::kLayout.uvAt() + 1]);
+    else
+        return colorLanes<V>(a, k);
+}
+
+/// How many live lanes make shading all lanes at once pay off: any for a plain colour (a few
+/// lane operations), half for Phong lighting and texture lookups, whose lanes are dear: below
+/// that the scalar code shades the live lanes cheaper.
+template <class V>
+inline constexpr int kMinVectorLanes = kVectorColor<V> && !V::kLayout.phong ? 1 : (kLanes + 1) / 2;
+
+/// fragmentWeights() lane by lane for an affine or perspective variant: the weights (m1, m2) of
+/// vertices 1 and 2 at the lanes' pixels, `depth` = 1/q there.
+template <class V>
+HWY_INLINE void weightLanes(const Planes& p, VecF dx, VecF dy, VecF depth, VecF& m1, VecF& m2) {
+    if constexpr (V::kInterp == Interp::Affine) {
+        m1 = evalLanes(p.l1, dx, dy);
+        m2 = evalLanes(p.l2, dx, dy);
+    } else {
+        m1 = evalLanes(p.u1, dx, dy) * depth;
+        m2 = evalLanes(p.u2, dx, dy) * depth;
+    }
+}
+
+/// interpolateVaryings() lane by lane: V's varyings at weights (m1, m2) into a[0 … V::kCount).
+template <class V>
+HWY_INLINE void varyingLanes(const Planes& p, VecF m1, VecF m2, VecF* a) {
+    const Df d;
+    for (int j = 0; j < V::kCount; ++j)
+        a[j] = hn::Set(d, p.a0[j]) + m1 * hn::Set(d, p.d1[j]) + m2 * hn::Set(d, p.d2[j]);
+}
+
+/// The packed colours of the lanes set in `live` (bit i: lane i) into colors[], from their
+/// varyings a[]: all lanes at once when enough are live, else lane by lane through the scalar
+/// fragmentColor(). Nothing for the depth shader, which writes no colour.
+template <class V>
+HWY_INLINE void shadeLanes(const VecF* a, const DrawConstants& k, unsigned live,
+                           std::uint32_t* colors) {
+    if constexpr (V::kShader != ShaderKind::Depth) {
+        const Df d;
+        if constexpr (kVectorColor<V> || kVectorTexture<V>) {
+            if (std::popcount(live) >= kMinVectorLanes<V>) {
+                hn::Store(hn::BitCast(Du(), vectorColorLanes<V>(a, k)), Du(), colors);
+                return;
+            }
+        }
+        constexpr int kCount = V::kCount;
+        HWY_ALIGN float varyings[kCount > 0 ? kCount : 1][kLanes];
+        for (int j = 0; j < kCount; ++j) hn::Store(a[j], d, varyings[j]);
+        for (unsigned rest = live; rest != 0; rest &= rest - 1) {
+            const int i = std::countr_zero(rest);
+            float v[kCount > 0 ? kCount : 1];
+            for (int j = 0; j < kCount; ++j) v[j] = varyings[j][i];
+            colors[i] = packColor(fragmentColor<V>(v, k, 0.0f));
+        }
+    }
+}
+
+/// The triangle loop of an affine or perspective variant V without derivatives, for wide boxes:
+/// row spans.
 template <class V>
 HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setup,
                                         const Planes& p) {
@@ -115,7 +189,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setu
         const bool any = coveredSpan(row, setup.stepX, setup.box.x0, setup.box.x1, lo, hi);
         for (int i = 0; i < 3; ++i) row[i] += setup.stepY[i];
         if (!any) continue;
-        const auto dy = static_cast<float>(y - p.baseY);
+        const VecF dy = hn::Set(d, static_cast<float>(y - p.baseY));
         const std::size_t rowStart = fb.index(0, y);
 
         for (int x = lo; x <= hi; x += kLanes) {
@@ -139,54 +213,220 @@ HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setu
                 if (pass == 0) continue;
             }
             VecF m1, m2;
-            if constexpr (V::kInterp == Interp::Affine) {
-                m1 = evalLanes(p.l1, dx, dy);
-                m2 = evalLanes(p.l2, dx, dy);
-            } else {
-                m1 = evalLanes(p.u1, dx, dy) * depth;
-                m2 = evalLanes(p.u2, dx, dy) * depth;
-            }
+            weightLanes<V>(p, dx, dy, depth, m1, m2);
             VecF a[kCount > 0 ? kCount : 1];
-            for (int j = 0; j < kCount; ++j)
-                a[j] = hn::Set(d, p.a0[j]) + m1 * hn::Set(d, p.d1[j]) + m2 * hn::Set(d, p.d2[j]);
+            varyingLanes<V>(p, m1, m2, a);
             std::uint32_t* crow = fb.color.data() + rowStart + static_cast<std::size_t>(x);
-            HWY_ALIGN float depths[kLanes];
-            // All lanes at once pay off only when most are live: a dense mesh's small
-            // triangles leave one to three, which the scalar code below shades cheaper.
             if constexpr (kVectorColor<V> || kVectorTexture<V>) {
-                if (std::popcount(pass) >= kLanes / 2) {
-                    VecI c;
-                    if constexpr (kVectorTexture<V>)
-                        c = bilinearPackedLanes(k.texture->level(0), a[V::kLayout.uvAt()],
-                                                a[V::kLayout.uvAt() + 1]);
-                    else
-                        c = colorLanes<V>(a, k);
-                    if (pass == kAll) {  // the inside of a wide triangle: two plain stores
-                        if constexpr (depthTested(V::kShader)) hn::StoreU(depth, d, zrow);
-                        hn::StoreU(hn::BitCast(du, c), du, crow);
-                        continue;
-                    }
-                    HWY_ALIGN std::uint32_t colors[kLanes];
-                    hn::Store(hn::BitCast(du, c), du, colors);
-                    hn::Store(depth, d, depths);
-                    for (int i = 0; i < n; ++i) {
-                        if (!(pass >> i & 1u)) continue;
-                        if constexpr (depthTested(V::kShader)) zrow[i] = depths[i];
-                        crow[i] = colors[i];
-                    }
+                if (pass == kAll) {  // the inside of a wide triangle: two plain stores
+                    if constexpr (depthTested(V::kShader)) hn::StoreU(depth, d, zrow);
+                    hn::StoreU(hn::BitCast(du, vectorColorLanes<V>(a, k)), du, crow);
                     continue;
                 }
             }
-            HWY_ALIGN float varyings[kCount > 0 ? kCount : 1][kLanes];
-            for (int j = 0; j < kCount; ++j) hn::Store(a[j], d, varyings[j]);
+            HWY_ALIGN std::uint32_t colors[kLanes];
+            HWY_ALIGN float depths[kLanes];
+            shadeLanes<V>(a, k, pass, colors);
             hn::Store(depth, d, depths);
-            for (int i = 0; i < n; ++i) {
-                if (!(pass >> i & 1u)) continue;
-                float v[kCount > 0 ? kCount : 1];
-                for (int j = 0; j < kCount; ++j) v[j] = varyings[j][i];
+            for (unsigned rest = pass; rest != 0; rest &= rest - 1) {
+                const int i = std::countr_zero(rest);
                 if constexpr (depthTested(V::kShader)) zrow[i] = depths[i];
-                if constexpr (V::kShader != ShaderKind::Depth)
-                    crow[i] = packColor(fragmentColor<V>(v, k, 0.0f));
+                if constexpr (V::kShader != ShaderKind::Depth) crow[i] = colors[i];
+            }
+        }
+    }
+    return fragments;
+}
+
+/// Block width and height in pixels: the lanes of a vector as a 2D block, row-major (lane i is
+/// pixel (i mod kBlockW, i div kBlockW) of the block), as square as 4-pixel rows allow.
+inline constexpr int kBlockW = kLanes < kMaxBlockSide ? kLanes : kMaxBlockSide;
+inline constexpr int kBlockH = kLanes / kBlockW;
+/// log2(kBlockW): lane i is in the block's row i >> kBlockShift.
+inline constexpr int kBlockShift = std::countr_zero(static_cast<unsigned>(kBlockW));
+static_assert(kBlockH <= kMaxBlockSide && kLanes <= 16, "a block fits in laneBits()' 16 bits");
+
+/// The lanes of a block's first `columns` columns and first `rows` rows: the block's part that
+/// lies in the box.
+inline unsigned blockLanes(int columns, int rows) {
+    unsigned row = (1u << columns) - 1u, bits = 0;
+    for (int r = 0; r < rows; ++r) bits |= row << (r * kBlockW);
+    return bits;
+}
+
+/// Lane i's pixel in a block, from the block's first pixel in a framebuffer `width` wide.
+inline std::size_t blockPixel(int i, int width) {
+    return static_cast<std::size_t>(i >> kBlockShift) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(i & (kBlockW - 1));
+}
+
+/// The depths stored at a block's pixels, from its first pixel `first` in a framebuffer `width`
+/// wide; lane i's pixel is offsets[i] = blockPixel(i, width) past it. Only the `covered` lanes'
+/// values matter, and only pixels in the box (the first `columns` of each row) are read: the rest
+/// may be another thread's tile, or past the frame. A one-row block is a plain load; a 4×4 block
+/// on a target whose masked loads touch no masked-off memory (AVX-512) is four masked row loads;
+/// other blocks gather, with every lane outside the triangle reading its first covered pixel
+/// instead of its own. (A copy through the stack would stall on store forwarding.)
+HWY_INLINE VecF blockDepths(const float* first, int width, VecI offsets, unsigned covered,
+                            int columns, [[maybe_unused]] int rows) {
+    const Df d;
+    if constexpr (kBlockH == 1) {
+        if (columns == kBlockW) return hn::LoadU(d, first);
+        HWY_ALIGN float part[kLanes] = {};
+        std::memcpy(part, first, sizeof(float) * static_cast<std::size_t>(columns));
+        return hn::Load(d, part);
+    }
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+    else if constexpr (kBlockW == 4 && kBlockH == 4) {
+        static_assert(!HWY_MEM_OPS_MIGHT_FAULT, "masked-off lanes must not be read");
+        const hn::Full128<float> d4;
+        const hn::Half<Df> d8;
+        const auto inRow = hn::FirstN(d4, static_cast<std::size_t>(columns));
+        const auto row = [&](int r) HWY_ATTR {
+            return r < rows ? hn::MaskedLoad(inRow, d4,
+                                             first + static_cast<std::size_t>(r) *
+                                                         static_cast<std::size_t>(width))
+                            : hn::Zero(d4);
+        };
+        return hn::Combine(d, hn::Combine(d8, row(3), row(2)), hn::Combine(d8, row(1), row(0)));
+    }
+#endif
+    else {
+        const std::uint8_t bits[8] = {static_cast<std::uint8_t>(covered),
+                                      static_cast<std::uint8_t>(covered >> 8)};
+        const hn::Mask<Di> live = hn::RebindMask(Di(), hn::LoadMaskBits(d, bits));
+        const auto safe = static_cast<std::int32_t>(blockPixel(std::countr_zero(covered), width));
+        return hn::GatherIndex(d, first, hn::IfThenElse(live, offsets, hn::Set(Di(), safe)));
+    }
+}
+
+/// Whether 4×4 blocks are written row by row with masked stores, which on AVX-512 touch no
+/// masked-off pixel (HWY_MEM_OPS_MIGHT_FAULT is 0 there); elsewhere pixel by pixel.
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+inline constexpr bool kMaskedRows = kBlockW == 4 && kBlockH == 4;
+#else
+inline constexpr bool kMaskedRows = false;
+#endif
+
+/// Writes the `pass` lanes of a block of variant V, depths (when tested) and packed colours, from
+/// its first pixel (z, c) in a framebuffer `width` wide: one masked store per row and buffer.
+/// Only where kMaskedRows.
+template <class V>
+HWY_INLINE void storeBlockRows([[maybe_unused]] VecF depth, [[maybe_unused]] VecI color,
+                               [[maybe_unused]] unsigned pass, [[maybe_unused]] float* z,
+                               [[maybe_unused]] std::uint32_t* c, [[maybe_unused]] int width) {
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+    static_assert(!HWY_MEM_OPS_MIGHT_FAULT, "masked-off lanes must not be written");
+    const hn::Full128<float> d4;
+    const hn::Full128<std::uint32_t> du4;
+    const hn::Half<Df> d8;
+    const hn::Half<Du> du8;
+    const auto colors = hn::BitCast(Du(), color);
+    const auto z01 = hn::LowerHalf(d8, depth), z23 = hn::UpperHalf(d8, depth);
+    const auto c01 = hn::LowerHalf(du8, colors), c23 = hn::UpperHalf(du8, colors);
+    const hn::Vec<decltype(d4)> zr[4] = {hn::LowerHalf(d4, z01), hn::UpperHalf(d4, z01),
+                                         hn::LowerHalf(d4, z23), hn::UpperHalf(d4, z23)};
+    const hn::Vec<decltype(du4)> cr[4] = {hn::LowerHalf(du4, c01), hn::UpperHalf(du4, c01),
+                                          hn::LowerHalf(du4, c23), hn::UpperHalf(du4, c23)};
+    for (int r = 0; r < 4; ++r) {
+        const std::uint8_t bits[8] = {static_cast<std::uint8_t>(pass >> (4 * r) & 0xFu)};
+        if (bits[0] == 0) continue;
+        const auto live = hn::LoadMaskBits(d4, bits);
+        const std::size_t row = static_cast<std::size_t>(r) * static_cast<std::size_t>(width);
+        if constexpr (depthTested(V::kShader)) hn::BlendedStore(zr[r], live, d4, z + row);
+        if constexpr (V::kShader != ShaderKind::Depth)
+            hn::BlendedStore(cr[r], hn::RebindMask(du4, live), du4, c + row);
+    }
+#endif
+}
+
+/// The triangle loop of an affine or perspective variant V without derivatives, for narrow boxes
+/// that fitsBlockLoop(): 2D blocks of pixels, one lane each. Coverage is forEachCovered()'s
+/// test, E ≥ 0 on all three edges (the top-left bias is in e0), done per lane in 32 bits.
+template <class V>
+HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& setup,
+                                         const Planes& p) {
+    static_assert(kHasSpanLoop<V>);
+    const Df d;
+    const Di di;
+    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
+    Framebuffer& fb = *ctx.fb;
+    const DrawConstants& k = *ctx.constants;
+    constexpr int kCount = V::kCount;
+
+    // Each lane's pixel (ox, oy) within the block, its place in the framebuffer and its edge
+    // values relative to the block's first pixel: all exact (fitsBlockLoop() bounds the
+    // integers, and small integers are exact floats), so a lane's dx and dy are the scalar
+    // loop's. Computed in lanes: a table written lane by lane and read back as a vector would
+    // stall on store forwarding, once per triangle.
+    const VecI lane = hn::Iota(di, 0);
+    const VecI ox = hn::And(lane, hn::Set(di, kBlockW - 1));
+    const VecI oy = hn::ShiftRight<kBlockShift>(lane);
+    const VecF offsetX = hn::ConvertTo(d, ox), offsetY = hn::ConvertTo(d, oy);
+    const VecI laneOffset = oy * hn::Set(di, fb.width) + ox;
+    const auto edgeOffsets = [&](int i) HWY_ATTR {
+        return ox * hn::Set(di, static_cast<std::int32_t>(setup.stepX[i])) +
+               oy * hn::Set(di, static_cast<std::int32_t>(setup.stepY[i]));
+    };
+    const VecI edge0 = edgeOffsets(0), edge1 = edgeOffsets(1), edge2 = edgeOffsets(2);
+    const int width = setup.box.x1 - setup.box.x0 + 1;
+    const int height = setup.box.y1 - setup.box.y0 + 1;
+    std::size_t fragments = 0;
+    // Without varyings the colour is the same at every pixel: packed once per triangle.
+    VecI flat = hn::Zero(di);
+    if constexpr (kCount == 0 && kVectorColor<V>) flat = colorLanes<V>(nullptr, k);
+
+    std::int64_t blockRow[3] = {setup.e0[0], setup.e0[1], setup.e0[2]};
+    for (int by = 0; by < height; by += kBlockH) {
+        const int y = setup.box.y0 + by;
+        const int rows = std::min(kBlockH, height - by);
+        const VecF dy = hn::Set(d, static_cast<float>(y - p.baseY)) + offsetY;
+        std::int64_t e[3] = {blockRow[0], blockRow[1], blockRow[2]};
+        for (int i = 0; i < 3; ++i) blockRow[i] += kBlockH * setup.stepY[i];
+
+        for (int bx = 0; bx < width; bx += kBlockW) {
+            const int columns = std::min(kBlockW, width - bx);
+            // Negative on some edge: outside (the sign bit of the OR of the three).
+            const VecI outside = (hn::Set(di, static_cast<std::int32_t>(e[0])) + edge0) |
+                                 (hn::Set(di, static_cast<std::int32_t>(e[1])) + edge1) |
+                                 (hn::Set(di, static_cast<std::int32_t>(e[2])) + edge2);
+            for (int i = 0; i < 3; ++i) e[i] += kBlockW * setup.stepX[i];
+            const unsigned covered =
+                blockLanes(columns, rows) & ~laneBits(hn::RebindMask(d, outside < hn::Zero(di)));
+            if (covered == 0) continue;
+            fragments += static_cast<std::size_t>(std::popcount(covered));
+
+            const int x = setup.box.x0 + bx;
+            const VecF dx = hn::Set(d, static_cast<float>(x - p.baseX)) + offsetX;
+            const VecF depth = hn::Set(d, 1.0f) / evalLanes(p.q, dx, dy);
+            const std::size_t first = fb.index(x, y);
+            float* zblock = fb.depth.data() + first;
+            unsigned pass = covered;
+            if constexpr (depthTested(V::kShader)) {
+                pass &= laneBits(depth <
+                                 blockDepths(zblock, fb.width, laneOffset, covered, columns, rows));
+                if (pass == 0) continue;
+            }
+            VecF m1, m2;
+            weightLanes<V>(p, dx, dy, depth, m1, m2);
+            VecF a[kCount > 0 ? kCount : 1];
+            varyingLanes<V>(p, m1, m2, a);
+            std::uint32_t* cblock = fb.color.data() + first;
+            if constexpr (kMaskedRows && kVectorColor<V> && kMinVectorLanes<V> == 1) {
+                // Every block is shaded all lanes at once: the colours stay in a vector.
+                storeBlockRows<V>(depth, kCount == 0 ? flat : colorLanes<V>(a, k), pass, zblock,
+                                  cblock, fb.width);
+                continue;
+            }
+            HWY_ALIGN std::uint32_t colors[kLanes];
+            HWY_ALIGN float depths[kLanes];
+            shadeLanes<V>(a, k, pass, colors);
+            hn::Store(depth, d, depths);
+            for (unsigned rest = pass; rest != 0; rest &= rest - 1) {
+                const int i = std::countr_zero(rest);
+                const std::size_t at = blockPixel(i, fb.width);
+                if constexpr (depthTested(V::kShader)) zblock[at] = depths[i];
+                if constexpr (V::kShader != ShaderKind::Depth) cblock[at] = colors[i];
             }
         }
     }
