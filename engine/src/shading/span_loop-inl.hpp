@@ -39,7 +39,8 @@
 HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
-/// The plane p at the lanes' pixels: the scalar Planes::eval, lane by lane.
+/// The plane p at the lanes' points (dx, dy), on or off the pixel grid: the scalar
+/// Planes::eval, lane by lane.
 HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, VecF dy) {
     const Df d;
     return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2]) * dy;
@@ -48,12 +49,6 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, VecF dy) {
 /// evalLanes() along one row (the same rounding: p[2]·dy is one product either way).
 HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return evalLanes(p, dx, hn::Set(Df(), dy));
-}
-
-/// The plane p at points (dx, dy) off the pixel grid, one per lane: Planes::eval lane by lane.
-HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, VecF dy) {
-    const Df d;
-    return hn::Set(d, p[0]) + hn::Set(d, p[1]) * dx + hn::Set(d, p[2]) * dy;
 }
 
 /// lightIntensity() and shade() lane by lane: the same operations in the same order, the
