@@ -1,7 +1,8 @@
-// One instantiation of every variant's span, block and multisampled span loops per SIMD target:
-// hwy/foreach_target.h compiles this file once for each target Highway enables, and
-// HWY_DYNAMIC_DISPATCH picks the best one the CPU has. The choice returns plain function
-// pointers, called once per triangle.
+// One instantiation of every variant's span loop per SIMD target: hwy/foreach_target.h compiles
+// this file once for each target Highway enables, and HWY_DYNAMIC_DISPATCH picks the best one
+// the CPU has. The choice returns a plain function pointer, called once per triangle. The block
+// and multisampled loops are compiled the same way in block_targets.cpp and msaa_targets.cpp;
+// this file holds what the three share (the switch that turns them off, the target's name).
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/span_targets.cpp"
@@ -11,7 +12,6 @@
 
 #include "pipeline/span_targets.hpp"
 #include "pipeline/variants.hpp"
-#include "shading/msaa_loop-inl.hpp"
 #include "shading/span_loop-inl.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -22,24 +22,6 @@ RasterizeFn spanLoopOf(const VariantKey& key) {
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
         if constexpr (kHasSpanLoop<V>) loop = &rasterizeSpans<V>;
-    });
-    return loop;
-}
-
-RasterizeFn blockLoopOf(const VariantKey& key) {
-    RasterizeFn loop = nullptr;
-    dispatch(key, [&](auto variant) {
-        using V = decltype(variant);
-        if constexpr (kHasSpanLoop<V>) loop = &rasterizeBlocks<V>;
-    });
-    return loop;
-}
-
-RasterizeFn msaaLoopOf(const VariantKey& key) {
-    RasterizeFn loop = nullptr;
-    dispatch(key, [&](auto variant) {
-        using V = decltype(variant);
-        if constexpr (kHasSpanLoop<V>) loop = &rasterizeMsaaSpans<V>;
     });
     return loop;
 }
@@ -60,23 +42,15 @@ std::atomic<bool> gSpanLoops{true};
 }  // namespace
 
 HWY_EXPORT(spanLoopOf);
-HWY_EXPORT(blockLoopOf);
-HWY_EXPORT(msaaLoopOf);
 HWY_EXPORT(targetName);
 
+bool spanLoopsEnabled() {
+    return gSpanLoops.load(std::memory_order_relaxed);
+}
+
 RasterizeFn spanLoop(const VariantKey& key) {
-    if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
+    if (!spanLoopsEnabled()) return nullptr;
     return HWY_DYNAMIC_DISPATCH(spanLoopOf)(key);
-}
-
-RasterizeFn blockLoop(const VariantKey& key) {
-    if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
-    return HWY_DYNAMIC_DISPATCH(blockLoopOf)(key);
-}
-
-RasterizeFn msaaSpanLoop(const VariantKey& key) {
-    if (!gSpanLoops.load(std::memory_order_relaxed)) return nullptr;
-    return HWY_DYNAMIC_DISPATCH(msaaLoopOf)(key);
 }
 
 std::int64_t spanTargetsCompiled() {

@@ -1,6 +1,7 @@
 #pragma once
-// The vector span and block loops, compiled once per SIMD target (SSE4, AVX2, AVX-512 and Highway's
-// portable fallback on x86), and the run-time choice among them: once per draw, never per pixel.
+// The vector span, block and multisampled loops, compiled once per SIMD target (SSE4, AVX2,
+// AVX-512 and Highway's portable fallback on x86; span_targets.cpp, block_targets.cpp,
+// msaa_targets.cpp), and the run-time choice among them: once per draw, never per pixel.
 
 #include <cstdint>
 
@@ -32,6 +33,9 @@ std::int64_t spanTargetsCompiled();
 /// triangle takes the scalar loop) or back on, for the whole process: the scalar loop is the
 /// reference the vector targets must equal bit for bit. Not for use while a draw runs.
 void enableSpanLoops(bool enabled);
+
+/// Whether the vector loops are on (enableSpanLoops()).
+bool spanLoopsEnabled();
 
 /// spanLoop() for a compile-time Variant.
 template <class V>
