@@ -337,17 +337,17 @@ DrawConstants benchConstants() {
     return {&benchTexture(), benchLighting(), glm::vec3(0.0f, 0.0f, -3.0f), glm::vec3(1.0f)};
 }
 
-// rasterizeTriangle<V>, the whole per-pixel loop (coverage, depth, interpolation, shading,
-// store), on the quad. Depth is cleared before each iteration, outside the timing, so every
-// pixel passes the depth test and is shaded.
+// Times rasterizeTriangle<V> over `tris`, which must cover the 256×256 frame exactly, with
+// the given vector loops (null: the scalar loop). Depth is cleared before each iteration,
+// outside the timing, so every pixel passes the depth test and is shaded.
 template <class V>
-void shadeQuad(benchmark::State& state) {
-    const std::vector<Emitted> tris = quadTriangles(V::kLayout);
+void timeTriangles(benchmark::State& state, const std::vector<Emitted>& tris, RasterizeFn spans,
+                   RasterizeFn blocks) {
     const DrawConstants constants = benchConstants();
     Framebuffer fb;
     fb.resize(kQuad, kQuad);
     fb.clear(0);
-    RasterContext ctx{&fb, &constants, 16, spanLoopFor<V>(), blockLoopFor<V>()};
+    RasterContext ctx{&fb, &constants, 16, spans, blocks};
     std::size_t pixels = 0;
     for (auto _ : state) {
         state.PauseTiming();
@@ -359,7 +359,14 @@ void shadeQuad(benchmark::State& state) {
     benchmark::DoNotOptimize(fb.color.data());
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pixels));
     if (pixels != static_cast<std::size_t>(kQuad) * kQuad)
-        state.SkipWithError("the quad does not cover exactly 256x256 pixels");
+        state.SkipWithError("the triangles do not cover exactly 256x256 pixels");
+}
+
+// rasterizeTriangle<V>, the whole per-pixel loop (coverage, depth, interpolation, shading,
+// store), on the quad, with the vector loops of the best target.
+template <class V>
+void shadeQuad(benchmark::State& state) {
+    timeTriangles<V>(state, quadTriangles(V::kLayout), spanLoopFor<V>(), blockLoopFor<V>());
 }
 BENCHMARK_TEMPLATE(shadeQuad, PainterV)->Name("shade/painter");
 BENCHMARK_TEMPLATE(shadeQuad, GouraudV)->Name("shade/gouraud");
@@ -411,25 +418,8 @@ std::vector<Emitted> smallTriangles(const VaryingLayout& layout) {
 // without (the scalar loop): their ratio in one run is what the block loop gains.
 template <class V, bool Vector>
 void shadeSmall(benchmark::State& state) {
-    const std::vector<Emitted> tris = smallTriangles(V::kLayout);
-    const DrawConstants constants = benchConstants();
-    Framebuffer fb;
-    fb.resize(kQuad, kQuad);
-    fb.clear(0);
-    RasterContext ctx{&fb, &constants, 16, Vector ? spanLoopFor<V>() : nullptr,
-                      Vector ? blockLoopFor<V>() : nullptr};
-    std::size_t pixels = 0;
-    for (auto _ : state) {
-        state.PauseTiming();
-        std::fill(fb.depth.begin(), fb.depth.end(), kEmptyDepth);
-        state.ResumeTiming();
-        pixels = 0;
-        for (const Emitted& t : tris) pixels += rasterizeTriangle<V>(&ctx, t.setup, t.planes);
-    }
-    benchmark::DoNotOptimize(fb.color.data());
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pixels));
-    if (pixels != static_cast<std::size_t>(kQuad) * kQuad)
-        state.SkipWithError("the grid does not cover exactly 256x256 pixels");
+    timeTriangles<V>(state, smallTriangles(V::kLayout), Vector ? spanLoopFor<V>() : nullptr,
+                     Vector ? blockLoopFor<V>() : nullptr);
 }
 BENCHMARK_TEMPLATE(shadeSmall, PainterV, false)->Name("shadeSmall/painter/scalar");
 BENCHMARK_TEMPLATE(shadeSmall, PainterV, true)->Name("shadeSmall/painter/vector");
