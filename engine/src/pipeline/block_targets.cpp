@@ -12,19 +12,13 @@
 #include <hwy/highway.h>
 
 #include "pipeline/span_targets.hpp"
-#include "pipeline/variants.hpp"
 #include "shading/span_loop-inl.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 RasterizeFn blockLoopOf(const VariantKey& key) {
-    RasterizeFn loop = nullptr;
-    dispatch(key, [&](auto variant) {
-        using V = decltype(variant);
-        if constexpr (kHasSpanLoop<V>) loop = &rasterizeBlocks<V>;
-    });
-    return loop;
+    return vectorLoopOf(key, [](auto variant) { return &rasterizeBlocks<decltype(variant)>; });
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE

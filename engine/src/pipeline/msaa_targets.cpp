@@ -12,19 +12,13 @@
 #include <hwy/highway.h>
 
 #include "pipeline/span_targets.hpp"
-#include "pipeline/variants.hpp"
 #include "shading/msaa_loop-inl.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 RasterizeFn msaaLoopOf(const VariantKey& key) {
-    RasterizeFn loop = nullptr;
-    dispatch(key, [&](auto variant) {
-        using V = decltype(variant);
-        if constexpr (kHasSpanLoop<V>) loop = &rasterizeMsaaSpans<V>;
-    });
-    return loop;
+    return vectorLoopOf(key, [](auto variant) { return &rasterizeMsaaSpans<decltype(variant)>; });
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE

@@ -11,19 +11,13 @@
 #include <hwy/highway.h>
 
 #include "pipeline/span_targets.hpp"
-#include "pipeline/variants.hpp"
 #include "shading/span_loop-inl.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 RasterizeFn spanLoopOf(const VariantKey& key) {
-    RasterizeFn loop = nullptr;
-    dispatch(key, [&](auto variant) {
-        using V = decltype(variant);
-        if constexpr (kHasSpanLoop<V>) loop = &rasterizeSpans<V>;
-    });
-    return loop;
+    return vectorLoopOf(key, [](auto variant) { return &rasterizeSpans<decltype(variant)>; });
 }
 
 const char* targetName() {

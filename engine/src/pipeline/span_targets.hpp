@@ -7,6 +7,7 @@
 
 #include "frontend/front_end.hpp"
 #include "pipeline/variants.hpp"
+#include "shading/span_loop.hpp"
 
 namespace facet::detail {
 
@@ -36,6 +37,17 @@ void enableSpanLoops(bool enabled);
 
 /// Whether the vector loops are on (enableSpanLoops()).
 bool spanLoopsEnabled();
+
+/// What `pick(variant)` returns for `key`'s variant, called only for variants with vector loops
+/// (kHasSpanLoop); null for the others. Each *_targets.cpp picks its loop with it.
+template <class Pick>
+RasterizeFn vectorLoopOf(const VariantKey& key, Pick pick) {
+    RasterizeFn loop = nullptr;
+    dispatch(key, [&](auto variant) {
+        if constexpr (kHasSpanLoop<decltype(variant)>) loop = pick(variant);
+    });
+    return loop;
+}
 
 /// spanLoop() for a compile-time Variant.
 template <class V>
