@@ -7,12 +7,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
+
+#include <glm/geometric.hpp>
 
 #include "facet/camera.hpp"
 #include "facet/mesh_io.hpp"
 #include "facet/render.hpp"
+#include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 
@@ -195,6 +199,78 @@ TEST_F(SceneIo, PathsTheFormatCannotHoldAreRefused) {
     ASSERT_TRUE(st);
     EXPECT_NE(st->what().find("cannot hold '#'"), std::string::npos) << st->what();
     EXPECT_FALSE(fs::exists(dir / "x.scene"));
+}
+
+// Conventions §9: the four cells of the table, and the "all one colour counts as uncoloured" rule.
+TEST(OpeningSettings, FollowTheTableOfWhatTheSceneHas) {
+    auto mesh = [](bool colors, bool oneColor, bool uvs) {
+        Mesh m;
+        m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        m.indices = {0, 1, 2};
+        if (colors)
+            m.colors = oneColor ? std::vector<glm::vec3>(3, glm::vec3(0.3f, 0.6f, 0.9f))
+                                : std::vector<glm::vec3>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        if (uvs) m.uvs = {{0, 0}, {1, 0}, {0, 1}};
+        return std::make_shared<const Mesh>(std::move(m));
+    };
+    const auto texture = std::make_shared<const Texture>();
+    struct Case {
+        bool colors, oneColor, uvs, tex;
+        ShaderKind shader;
+        bool combine;
+        Lighting lighting;
+    };
+    const Case cases[] = {
+        {false, false, true, true, ShaderKind::Texture, true, Lighting::Gouraud},     // Spot
+        {true, true, true, true, ShaderKind::Texture, true, Lighting::Gouraud},       // one colour
+        {true, false, true, true, ShaderKind::Texture, false, Lighting::Off},         // brick wall
+        {false, false, false, false, ShaderKind::Painter, false, Lighting::Gouraud},  // bunny
+        {true, true, false, false, ShaderKind::Painter, false, Lighting::Gouraud},
+        {true, false, false, false, ShaderKind::Painter, false, Lighting::Off},      // course cube
+        {false, false, false, true, ShaderKind::Painter, false, Lighting::Gouraud},  // no uvs
+        {true, false, true, false, ShaderKind::Painter, false, Lighting::Off},  // uvs, no image
+    };
+    for (const Case& c : cases) {
+        Scene scene;
+        scene.mesh = mesh(c.colors, c.oneColor, c.uvs);
+        if (c.tex) scene.texture = texture;
+        RenderSettings s;
+        s.mode = DrawMode::Wireframe;  // untouched by the rule
+        s.shader = ShaderKind::Depth;
+        s.combine = !c.combine;
+        applyOpeningSettings(scene, s);
+        SCOPED_TRACE(::testing::Message() << "colors " << c.colors << " one " << c.oneColor
+                                          << " uvs " << c.uvs << " texture " << c.tex);
+        EXPECT_EQ(s.shader, c.shader);
+        EXPECT_EQ(s.combine, c.combine);
+        EXPECT_EQ(s.lighting, c.lighting);
+        EXPECT_EQ(s.mode, DrawMode::Wireframe);
+        EXPECT_EQ(hasVaryingColors(*scene.mesh), c.colors && !c.oneColor);
+    }
+}
+
+// Conventions §3b: the up axis. The camera's y hint is the axis's opposite, the eye is above the
+// centre along that axis, and the default (+Y) is the course's (0, −1, 0).
+TEST(UpAxis, FramesABareMeshWithTheNamedAxisUp) {
+    EXPECT_EQ(parseUpAxis("z"), UpAxis::Z);
+    EXPECT_EQ(parseUpAxis("X"), UpAxis::X);
+    EXPECT_EQ(parseUpAxis("w"), std::nullopt);
+    for (UpAxis axis : {UpAxis::X, UpAxis::Y, UpAxis::Z}) {
+        EXPECT_EQ(parseUpAxis(toString(axis)), axis);
+        Mesh m;
+        m.positions = {{-1, -2, -3}, {1, 2, 3}, {1, -2, 3}};
+        m.indices = {0, 1, 2};
+        const Scene s = sceneForMesh(m, "m.off", 640, 480, axis);
+        const glm::dvec3 up = upVector(axis);
+        EXPECT_EQ(s.camera.up, -up);
+        const glm::dvec3 toEye = glm::normalize(s.camera.eye - s.camera.look);
+        EXPECT_NEAR(glm::dot(toEye, up), std::sin(25.0 * std::numbers::pi / 180.0), 1e-12);
+    }
+    const Scene y = sceneForMesh(Mesh{}, "m.off", 640, 480);
+    EXPECT_EQ(y.camera.up, glm::dvec3(0, -1, 0));
+    // Z-up: seen from the front, −Y, as Z-up modelling tools show it.
+    const Scene z = sceneForMesh(Mesh{}, "m.off", 640, 480, UpAxis::Z);
+    EXPECT_LT(z.camera.eye.y, z.camera.look.y);
 }
 
 }  // namespace

@@ -2,8 +2,11 @@
 // The .scene format (conventions §1): ten line-oriented fields, the last optional; a bare mesh
 // opened as a scene (§3b); and the writer that saves a scene back to that format.
 
+#include <optional>
 #include <string>
 #include <string_view>
+
+#include <glm/vec3.hpp>
 
 #include "facet/error.hpp"
 #include "facet/load_control.hpp"
@@ -41,16 +44,45 @@ FileKind fileKind(const std::string& path);
 inline constexpr int kBareMeshWidth = 1280;
 inline constexpr int kBareMeshHeight = 720;
 
+/// The world axis a bare mesh stands on (conventions §3b): +Y by default, +Z for models made
+/// Z-up (scans, CAD), +X for the rest.
+enum class UpAxis { X, Y, Z };
+
+/// Parses "x", "y" or "z" (either case); nullopt otherwise.
+std::optional<UpAxis> parseUpAxis(std::string_view name);
+
+/// "x", "y" or "z".
+std::string_view toString(UpAxis axis);
+
+/// The world direction `axis` names, a unit vector.
+glm::dvec3 upVector(UpAxis axis);
+
 /// The scene conventions §3b gives a bare mesh at `width` × `height`: a three-quarter view of its
-/// bounding sphere with the course's up, a point light near the camera, a neutral material.
-/// Scene::path and meshPath are `meshPath`; no texture is loaded.
-Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height);
+/// bounding sphere with `up` up on screen (the camera's y hint is its opposite, as the course's
+/// (0, −1, 0) is for +Y), a point light near the camera, a neutral material. Scene::path and
+/// meshPath are `meshPath`; no texture is loaded.
+Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height,
+                   UpAxis up = UpAxis::Y);
+
+/// How a bare mesh is framed when opened: image size and up axis (a .scene ignores these).
+struct OpenOptions {
+    int width = kBareMeshWidth;    ///< image width of a bare mesh's scene
+    int height = kBareMeshHeight;  ///< image height of a bare mesh's scene
+    UpAxis up = UpAxis::Y;         ///< the world axis shown up on screen
+
+    /// Every field equal.
+    bool operator==(const OpenOptions&) const = default;
+};
 
 /// Opens a .scene file, or a bare .off/.obj mesh as sceneForMesh() at `width` × `height` (with
 /// its OBJ map_Kd texture). Anything else is an error saying what was expected. The optional
 /// `control` gets the progress and may cancel (then Error::cancelled is set).
 Result<Scene> openSceneFile(const std::string& path, int width = kBareMeshWidth,
                             int height = kBareMeshHeight, const LoadControl* control = nullptr);
+
+/// The same with a bare mesh framed by `options` (size and up axis).
+Result<Scene> openSceneFile(const std::string& path, const OpenOptions& options,
+                            const LoadControl* control = nullptr);
 
 /// The .scene text (conventions §1) of `scene`: mesh and texture paths relative to the folder
 /// of `sceneFile`, numbers in shortest round-trip form, so loading it gives the same scene.

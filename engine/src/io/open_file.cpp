@@ -114,7 +114,38 @@ FileKind fileKind(const std::string& path) {
     return byContent != FileKind::unknown ? byContent : kindFromExtension(path);
 }
 
-Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height) {
+std::optional<UpAxis> parseUpAxis(std::string_view name) {
+    if (name == "x" || name == "X") return UpAxis::X;
+    if (name == "y" || name == "Y") return UpAxis::Y;
+    if (name == "z" || name == "Z") return UpAxis::Z;
+    return std::nullopt;
+}
+
+std::string_view toString(UpAxis axis) {
+    switch (axis) {
+        case UpAxis::X:
+            return "x";
+        case UpAxis::Z:
+            return "z";
+        case UpAxis::Y:
+            break;
+    }
+    return "y";
+}
+
+glm::dvec3 upVector(UpAxis axis) {
+    switch (axis) {
+        case UpAxis::X:
+            return {1.0, 0.0, 0.0};
+        case UpAxis::Z:
+            return {0.0, 0.0, 1.0};
+        case UpAxis::Y:
+            break;
+    }
+    return {0.0, 1.0, 0.0};
+}
+
+Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height, UpAxis up) {
     Scene scene;
     scene.path = meshPath;
     scene.meshPath = meshPath;
@@ -131,12 +162,20 @@ Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height
     }
     if (!(radius > 0.0)) radius = 1.0;  // a point or an empty mesh: any view shows it
 
-    // Three-quarter view: from the front (+Z), 35° to the right and 25° above.
+    // The model's own right, up and front (towards the viewer), right-handed: +X, +Y, +Z for
+    // Y-up; for Z-up the front is −Y (the front view of Z-up modelling tools); for X-up the
+    // axes turned once more (+Z, +X, +Y).
+    const glm::dvec3 upDir = upVector(up);
+    const glm::dvec3 rightDir = up == UpAxis::X ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 frontDir = glm::cross(rightDir, upDir);
+
+    // Three-quarter view: from the front, 35° to the right and 25° above.
     constexpr double deg = std::numbers::pi / 180.0;
     const double azimuth = 35.0 * deg;
     const double elevation = 25.0 * deg;
-    const glm::dvec3 towardsEye(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
-                                std::cos(azimuth) * std::cos(elevation));
+    const glm::dvec3 towardsEye = std::sin(azimuth) * std::cos(elevation) * rightDir +
+                                  std::sin(elevation) * upDir +
+                                  std::cos(azimuth) * std::cos(elevation) * frontDir;
     // f = 1.25 × the shorter side (a field of view of about 44° across it); the sphere's
     // silhouette, f·r / √(d² − r²) pixels in radius, takes 1/1.08 of half the shorter side.
     const double shortSide = static_cast<double>(std::min(width, height));
@@ -147,7 +186,7 @@ Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height
     Camera& camera = scene.camera;
     camera.look = centre;
     camera.eye = centre + distance * towardsEye;
-    camera.up = {0.0, -1.0, 0.0};  // the course's: world +Y up on screen
+    camera.up = -upDir;  // the y hint points down the image: (0, −1, 0), the course's, for +Y
     camera.focal = focal;
     camera.width = width;
     camera.height = height;
@@ -166,6 +205,16 @@ Scene sceneForMesh(Mesh mesh, const std::string& meshPath, int width, int height
 
 Result<Scene> openSceneFile(const std::string& path, int width, int height,
                             const LoadControl* control) {
+    OpenOptions options;
+    options.width = width;
+    options.height = height;
+    return openSceneFile(path, options, control);
+}
+
+Result<Scene> openSceneFile(const std::string& path, const OpenOptions& options,
+                            const LoadControl* control) {
+    const int width = options.width;
+    const int height = options.height;
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return Error{{path, 0}, "is a folder, not a file"};
     if (!std::filesystem::exists(path, ec)) return Error{{path, 0}, "file not found"};
@@ -183,7 +232,7 @@ Result<Scene> openSceneFile(const std::string& path, int width, int height,
             auto mesh = loadMeshFile(path, head, control ? &meshControl : nullptr);
             if (!mesh) return mesh.error();
             const std::string mapKd = mesh->texturePath;
-            Scene scene = sceneForMesh(std::move(*mesh), path, width, height);
+            Scene scene = sceneForMesh(std::move(*mesh), path, width, height, options.up);
             const LoadControl textureControl = meter.sub(meshShare, 1.0f);
             if (!mapKd.empty()) {
                 if (Status st =
