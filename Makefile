@@ -97,8 +97,8 @@ charts: build
 
 doc: setup
 	@command -v doxygen >/dev/null || bash scripts/setup-debian.sh doxygen
-	doxygen docs/Doxyfile
-	@echo "Open $(BUILD)/doc/html/index.html"
+	( cat docs/Doxyfile; echo "OUTPUT_DIRECTORY = $(BUILD)/doc" ) | doxygen -
+	@echo "Open $(abspath $(BUILD))/doc/html/index.html"
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp' | grep -v '^third_party/')
