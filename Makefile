@@ -65,7 +65,7 @@ test-clang: setup
 	cd $(BUILD_CLANG) && ctest --output-on-failure -j 2
 
 # The libFuzzer targets (fuzz/) with AddressSanitizer and UndefinedBehaviorSanitizer, each run for
-# FUZZ_SECONDS on its seed corpus; fails on any finding (README, "Fuzzing"). -O1 with line tables
+# FUZZ_SECONDS on its seed corpus; fails on any finding (docs/fuzzing.md). -O1 with line tables
 # only, as libFuzzer's documentation suggests: stack traces name lines, and it builds fast.
 FUZZ_SECONDS ?= 60
 FUZZ_TARGETS ?= scene off obj texture render

@@ -162,7 +162,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         openSceneFile(o.scene, w > 0 ? w : kBareMeshWidth, w > 0 ? h : kBareMeshHeight);
     if (!loaded) return bad(loaded.error().what());
     scene = std::move(loaded).value();
-    // A bare mesh is lit by default: its scene was made for it (conventions §3b). A .scene keeps
+    // A bare mesh is lit by default: its scene was made for it (spec §3b). A .scene keeps
     // the course's default, unlit.
     settings.lighting = o.lighting.empty() ? (bareMesh ? Lighting::Gouraud : Lighting::Off)
                                            : *parseLighting(o.lighting);

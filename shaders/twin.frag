@@ -1,5 +1,5 @@
 #version 330 core
-// The OpenGL twin's fragment stage: the course's shaders (conventions §6–§8) on the varyings of
+// The OpenGL twin's fragment stage: the course's shaders (spec §6–§8) on the varyings of
 // twin.vert. #defines from the renderer, besides those of twin.vert:
 //   DEPTH_SHADER  write a marker (alpha 0); the renderer maps depth to viridis after readback
 //   COMBINE       texel × (lit) colour instead of the bare texel

@@ -1,5 +1,5 @@
 #version 330 core
-// The OpenGL twin's vertex stage: facet's camera (conventions §4, camera.hpp) into GL's clip
+// The OpenGL twin's vertex stage: facet's camera (spec §4, camera.hpp) into GL's clip
 // space, Gouraud lighting per vertex, and the varyings the fragment stage needs. The renderer
 // inserts one variant's #defines after the #version line:
 //   POINTS            vertices mode: each instance is one mesh vertex drawn as a square
@@ -55,7 +55,7 @@ vec4 glClip(vec4 c) {
 
 #ifdef LINES
 // Wireframe and normals: the engine's Bresenham line joins the centres of the pixels holding
-// its ends (conventions §8), so each end is moved there. llvmpipe draws a line as a thin
+// its ends (spec §8), so each end is moved there. llvmpipe draws a line as a thin
 // parallelogram under the fill rule, which settles a tie (the line exactly between two pixel
 // centres) towards the smaller x or y, where Bresenham rounds towards the larger: the nudge of
 // two steps of GL's 1/256 px grid turns the ties (one step left 0.14% of the wireframe pixels
@@ -68,7 +68,7 @@ vec4 lineEnd(vec4 c) {
 #endif
 
 #ifdef POINTS
-// The engine's vertex square (conventions §8): pixels px + lo … px + lo + size − 1 around the
+// The engine's vertex square (spec §8): pixels px + lo … px + lo + size − 1 around the
 // pixel (px, py) holding the vertex. Two triangles with edges on pixel borders cover exactly
 // those pixels; GL points would drop squares whose centre is off-screen.
 vec4 pointCorner(vec4 c) {

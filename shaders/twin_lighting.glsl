@@ -1,4 +1,4 @@
-// Conventions §6 in GLSL for the OpenGL twin, the same rules as facet::lightIntensity (float
+// spec §6 in GLSL for the OpenGL twin, the same rules as facet::lightIntensity (float
 // version, lighting.hpp), shared by the vertex stage (Gouraud) and the fragment stage (Phong):
 //   I = Ia·Ka + Id · ( Kd · max(0, n·l) + Ks · max(0, n·h)^s ),  nothing but Ia·Ka where n·l ≤ 0.
 // The renderer inserts this file after the #defines of both stages.

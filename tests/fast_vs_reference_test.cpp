@@ -190,7 +190,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, FastVsReference, testing::ValuesIn(allCases()),
 // Spot's OBJ splits 2,930 positions into 3,225 vertices along its texture seams. Lit, the
 // engine must match the reference drawing a welded copy (one vertex per position, so normals
 // per position by construction) within 1 LSB everywhere: no light band along the seams
-// (conventions §6; issue 14, point 5). The same comparison with normals per split vertex, as
+// (spec §6; issue 14, point 5). The same comparison with normals per split vertex, as
 // before, fails: that is the band.
 TEST(SpotSeams, LitSpotMatchesTheWeldedReferenceWithin1Lsb) {
     const std::string path = facet::test::sharedScenePath("scenes/spot_1280x720");

@@ -1,5 +1,5 @@
 // The OpenGL twin (app/gl) against the reference path: an independent renderer held to the
-// same conventions, on the course scenes, Spot and the bunny. Outside the reference's ambiguity
+// same specification, on the course scenes, Spot and the bunny. Outside the reference's ambiguity
 // mask, coverage and colours must agree within the tolerances stated below (kTriangles...),
 // which were measured on llvmpipe. Each case prints one summary line:
 //   [gl-vs-ref] <case> covered=<n> ambiguous=<n> differing=<n> (<%>)

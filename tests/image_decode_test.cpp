@@ -103,7 +103,7 @@ TEST(ImageDecode, PngMatchesStbExactly) {
 
 // libjpeg-turbo (JDCT_ISLOW, fancy upsampling: the closest of its settings) rounds its IDCT and
 // YCbCr conversion differently from stb_image: measured on the course's images, brick.jpg has
-// 10.4% of pixels off by at most 3 steps, world_map.jpg 2.5% by at most 2 (README, "Textures").
+// 10.4% of pixels off by at most 3 steps, world_map.jpg 2.5% by at most 2 (docs/fuzzing.md).
 TEST(ImageDecode, JpegWithinMeasuredDifferenceOfStb) {
     for (const char* name : {"tex_jpeg_progressive.jpg", "tex_jpeg_gray.jpg",
                              "tex_jpeg_422_odd.jpg", "tex_jpeg_cmyk.jpg"}) {

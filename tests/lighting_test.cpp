@@ -1,4 +1,4 @@
-// Lighting (conventions §6) against hand-computed values, both versions: ambient, diffuse at 60°,
+// Lighting (spec §6) against hand-computed values, both versions: ambient, diffuse at 60°,
 // specular at and off the half vector, a light behind the surface, w = 0 and w scaling, the
 // edge exponents and undefined directions (documented in lighting.hpp), and float vs double.
 

@@ -110,7 +110,7 @@ TEST(OffLoader, UvsAreKeptAsWritten) {
     auto r = facet::loadOff(data("off_uv.off"));
     expectLoaded(r);
     ASSERT_EQ(r->uvs.size(), 3u);
-    expectVec(r->uvs[0], {0.25f, 0.5f});  // no flip for OFF (conventions §2)
+    expectVec(r->uvs[0], {0.25f, 0.5f});  // no flip for OFF (spec §2)
     expectVec(r->uvs[1], {-1.0f, 3.0f});
     expectVec(r->colors[2], {0, 0, 1});
 }

@@ -1,4 +1,4 @@
-// Vertex normals (conventions §6) against hand-computed values: the course cube, a regular
+// Vertex normals (spec §6) against hand-computed values: the course cube, a regular
 // tetrahedron, degenerate input, and a fine sphere; plus the normals display length (§8).
 
 #include <gtest/gtest.h>
@@ -227,7 +227,7 @@ TEST(Normals, DisplayLengthIsDiagonalOverHundred) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-// Normals per position and from the file (conventions §3, §6; issue 14, point 5).
+// Normals per position and from the file (spec §3, §6; issue 14, point 5).
 
 namespace seams {
 
@@ -294,7 +294,7 @@ TEST(NormalsPerPosition, ACubeWithSeparateFaceUvsSharesOneNormalPerCorner) {
 
 TEST(NormalsPerPosition, OffVerticesAreEachTheirOwnPosition) {
     // Two triangles meeting at a fold, the shared corner written twice: OFF has no positions
-    // to share, so the two copies keep their own face's normal (conventions §6).
+    // to share, so the two copies keep their own face's normal (spec §6).
     const auto m = facet::parseOff(
         "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n0 1 0\n0 0 1\n"
         "3 0 1 2\n3 3 4 5\n",

@@ -1,4 +1,4 @@
-// Opening what users bring and saving it back (conventions §1, §3b; issue 14, points 1-2):
+// Opening what users bring and saving it back (spec §1, §3b; issue 14, points 1-2):
 // what a file is, the scene a bare mesh gets, and a saved .scene that loads as the same scene
 // and renders the same image byte for byte.
 
@@ -201,7 +201,7 @@ TEST_F(SceneIo, PathsTheFormatCannotHoldAreRefused) {
     EXPECT_FALSE(fs::exists(dir / "x.scene"));
 }
 
-// Conventions §9: the four cells of the table, and the "all one colour counts as uncoloured" rule.
+// spec §9: the four cells of the table, and the "all one colour counts as uncoloured" rule.
 TEST(OpeningSettings, FollowTheTableOfWhatTheSceneHas) {
     auto mesh = [](bool colors, bool oneColor, bool uvs) {
         Mesh m;
@@ -249,7 +249,7 @@ TEST(OpeningSettings, FollowTheTableOfWhatTheSceneHas) {
     }
 }
 
-// Conventions §3b: the up axis. The camera's y hint is the axis's opposite, the eye is above the
+// spec §3b: the up axis. The camera's y hint is the axis's opposite, the eye is above the
 // centre along that axis, and the default (+Y) is the course's (0, −1, 0).
 TEST(UpAxis, FramesABareMeshWithTheNamedAxisUp) {
     EXPECT_EQ(parseUpAxis("z"), UpAxis::Z);

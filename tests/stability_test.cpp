@@ -511,7 +511,7 @@ TEST(CameraPaths, GrazingTheNearPlaneMatchesReference) {
     EXPECT_GT(clipped, 0u) << "the near plane must cut the surface in some views";
 }
 
-// Looking straight along the y hint: conventions §1 forbid it and checkCamera() says so; the
+// Looking straight along the y hint: spec §1 forbid it and checkCamera() says so; the
 // look-at frame is then undefined (the cross product is zero, normalize gives NaN). A program
 // that renders anyway must get no crash and no NaN depth.
 TEST(CameraPaths, DegenerateLookAtIsRejectedAndRendersNoNaN) {

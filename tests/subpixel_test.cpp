@@ -1,6 +1,6 @@
 // Sub-pixel precision (issue 6, part 3): RenderSettings::subPixelBits picks the grid vertices
 // snap to for coverage. Pinned here: 8 bits is the default picture bit for bit; at b bits the
-// coverage is exactly the reference's coverage of the vertices rounded to 1/2^b px (conventions
+// coverage is exactly the reference's coverage of the vertices rounded to 1/2^b px (spec
 // §5, "the coverage decision on that grid is exact"); no grid cracks a mesh; coarser grids only
 // lose accuracy; broken input stays harmless. The numbers of the quick sweep are printed as
 // "[subpixel] ..." lines; each asserted bound carries the values it was measured from.

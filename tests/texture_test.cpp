@@ -1,4 +1,4 @@
-// Textures (conventions §7): wrapping of extreme and non-finite coordinates, exactness of
+// Textures (spec §7): wrapping of extreme and non-finite coordinates, exactness of
 // filtering at texel centres and borders, the mip chain's sizes and contents, the level of
 // detail, fast samplers against the double-precision reference, and loading (good files, the
 // shared data, and every kind of bad file).

@@ -35,7 +35,7 @@ TEST(UnitPow, WithinAThousandthOfAStepOfTheDoublePow) {
         EXPECT_LT(lsb, 1e-3) << "s = " << s;
         overall = std::max(overall, lsb);
     }
-    // The figure the README quotes.
+    // The largest error, for the log.
     std::printf("unitPow: largest error %.2e of an 8-bit step for s in [0.5, 1000]\n", overall);
 }
 

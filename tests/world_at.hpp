@@ -8,7 +8,7 @@
 
 namespace facet::test {
 
-/// The world point that projects to pixel position (px, py) at camera depth z (conventions §4).
+/// The world point that projects to pixel position (px, py) at camera depth z (spec §4).
 inline glm::vec3 worldAt(const Camera& cam, double px, double py, double z) {
     const glm::dvec3 zAxis = glm::normalize(cam.look - cam.eye);
     const glm::dvec3 xAxis = glm::normalize(glm::cross(cam.up, zAxis));

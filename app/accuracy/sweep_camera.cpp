@@ -176,7 +176,7 @@ std::vector<CameraPoint> sweepCameraPaths(const SweepOptions& options) {
         const Bounds b = computeBounds(*scene.mesh);
         const glm::dvec3 centre = 0.5 * glm::dvec3(b.min + b.max);
         const glm::dvec3 away = scene.camera.eye - centre;
-        // The camera frame of conventions §4; it does not change as the eye backs away.
+        // The camera frame of spec §4; it does not change as the eye backs away.
         const glm::dvec3 z = glm::normalize(-away);
         const glm::dvec3 x = glm::normalize(glm::cross(scene.camera.up, z));
         const glm::dvec3 y = glm::cross(z, x);

@@ -61,7 +61,7 @@ std::vector<CaseSpec> suiteSpecs(const std::string& shared, bool quick) {
         fileCase("example0", course + "example0.scene", 0, 0),
         fileCase("example1", course + "example1.scene", 0, 0),
         fileCase("example2", course + "example2.scene", 0, 0),
-        // The course's textured facet names no image; the README renders it with brick.jpg.
+        // The course's textured facet names no image; docs/cli.md renders it with brick.jpg.
         fileCase("example_textured", course + "example_textured.scene", 0, 0, course + "brick.jpg"),
         fileCase("bunny_720p", scenes + "bunny_1280x720.scene", 1280, 720),
         fileCase("bunny_1080p", scenes + "bunny_1920x1080.scene", 1920, 1080),

@@ -11,7 +11,7 @@
 namespace facet::gl {
 namespace {
 
-/// The engine's 8-bit rounding (conventions §5): clamp, ×255, round half up; in float, as the
+/// The engine's 8-bit rounding (spec §5): clamp, ×255, round half up; in float, as the
 /// engine converts viridis' double result to float first.
 std::uint32_t toByte(float c) {
     const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;

@@ -1,5 +1,5 @@
 #pragma once
-// The twin's lines, wireframe and normals display, as conventions §8 draws them: each edge
+// The twin's lines, wireframe and normals display, as spec §8 draws them: each edge
 // once, from the pixel of one end to the pixel of the other, both ends included. twin.vert
 // moves the ends to pixel centres; this file supplies the index lists and the extra pass for
 // the ends that GL's lines leave out.

@@ -39,7 +39,7 @@ struct ShaderSources {
     std::string folder;    ///< where they were found
     StageSource vertex;    ///< twin.vert
     StageSource fragment;  ///< twin.frag
-    std::string lighting;  ///< twin_lighting.glsl: conventions §6, shared by both stages
+    std::string lighting;  ///< twin_lighting.glsl: spec §6, shared by both stages
 };
 
 /// Reads twin.vert, twin.frag and twin_lighting.glsl from findShaderFolder("twin.vert").

@@ -139,7 +139,7 @@ std::size_t uploadMesh(RendererState& s, const Mesh& mesh, const Variant& v,
     return bytes;
 }
 
-/// The normals display (conventions §8): a red segment from each vertex with a normal, drawn
+/// The normals display (spec §8): a red segment from each vertex with a normal, drawn
 /// after the main pass; under the depth test except with Simple, as in the engine.
 Status drawNormals(RendererState& s, const Scene& scene, const RenderSettings& settings,
                    const std::vector<glm::vec3>& normals, const FrameUniforms& u, GlStats& stats) {

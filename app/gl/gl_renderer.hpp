@@ -1,7 +1,7 @@
 #pragma once
 // The OpenGL twin of facet::Renderer: the same scene with the same settings drawn by OpenGL
 // (Mesa's llvmpipe on a machine without a GPU) and read back into a facet::Framebuffer, as a
-// yardstick for speed and an independent check of the pictures. It follows the conventions
+// yardstick for speed and an independent check of the pictures. It follows the specification
 // where GL lets it: camera and pixel centres, top-left fill rule, LESS depth, the lighting
 // formula, repeat wrap, the engine's own mip chain. Where GL decides itself (8-bit texture
 // filter weights, the level of detail, the diamond-exit rule of lines) the pictures differ

@@ -32,7 +32,7 @@ std::size_t TextureCache::bind(const std::shared_ptr<const Texture>& texture,
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
     }
-    // Conventions §7: nearest is texel ⌊u'·W⌋ on level 0; bilinear blends the four nearest
+    // spec §7: nearest is texel ⌊u'·W⌋ on level 0; bilinear blends the four nearest
     // texel centres of level 0; trilinear blends two levels' bilinear results. Below λ = 0
     // GL magnifies, which for trilinear is bilinear on level 0, like the engine's clamp.
     const GLint mag = filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR;

@@ -21,7 +21,7 @@ namespace facet::view {
 /// What a finished load produced.
 struct LoadedScene {
     std::string path;       ///< the file as the user named it
-    Scene scene;            ///< the scene (a bare mesh's made per conventions §3b)
+    Scene scene;            ///< the scene (a bare mesh's made per spec §3b)
     bool bareMesh = false;  ///< the file was a mesh, not a .scene
 };
 

@@ -82,7 +82,7 @@ void orbitAxes(const Orbit& o, glm::dvec3& right, glm::dvec3& screenUp) {
     const glm::dvec3 h = horizontal(o, o.yaw);
     // d(eye direction)/d(pitch): perpendicular to the view, leaning towards `vertical`.
     screenUp = -std::sin(p) * h + std::cos(p) * o.vertical;
-    // d(eye direction)/d(yaw), normalised: the camera's right (conventions §4: x = up × z).
+    // d(eye direction)/d(yaw), normalised: the camera's right (spec §4: x = up × z).
     right = glm::cross(o.vertical, h);
 }
 

@@ -3,7 +3,7 @@
 // functions on plain data (no window, no OpenGL), so the unit tests cover them fully.
 //
 // The basis is taken from the scene's camera: `vertical` is the world direction shown upwards
-// (the negated y hint, conventions §4) and `reference` the horizontal direction from the
+// (the negated y hint, spec §4) and `reference` the horizontal direction from the
 // look-at point towards the scene's eye, so the scene's own view is yaw 0. The camera's up is
 // built from yaw and pitch (perpendicular to the view, never parallel to it), and pitch stops
 // short of ±90°: no flip and no NaN at the poles.

@@ -35,7 +35,7 @@ struct ViewerModel {
     SizePolicy sizePolicy = SizePolicy::FollowWindow;
     std::vector<std::string> recent;  ///< scene and mesh files opened, most recent first
     std::string recentFile;           ///< where `recent` is kept across runs; empty: not kept
-    bool bareMesh = false;            ///< the scene was made for a bare mesh (conventions §3b)
+    bool bareMesh = false;            ///< the scene was made for a bare mesh (spec §3b)
     std::uint64_t sceneVersion = 0;   ///< counts loads, so copies know when the mesh changed
 
     Renderer renderer;  ///< keeps its scratch buffers from frame to frame

@@ -1,5 +1,5 @@
 #pragma once
-// Camera transforms (conventions §4) as GLM matrices, named by what they map.
+// Camera transforms (spec §4) as GLM matrices, named by what they map.
 //
 // Clip space here is the homogeneous pixel space of the course's K matrix: a camera-space point
 // (X, Y, Z) maps to clip (f·X + w/2·Z, f·Y + h/2·Z, Z, Z), so pixel = clip.xy / clip.w and
@@ -39,7 +39,7 @@ glm::dmat4 clipFromWorld(const Camera& camera);
 /// Continuous pixel coordinates and depth of a world point (depth <= 0: behind the camera).
 glm::dvec3 projectToPixel(const Camera& camera, const glm::dvec3& world);
 
-/// Validates a camera as conventions §1 requires; returns an explanation or empty on success.
+/// Validates a camera as spec §1 requires; returns an explanation or empty on success.
 std::string checkCamera(const Camera& camera);
 
 }  // namespace facet

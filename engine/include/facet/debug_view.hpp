@@ -1,6 +1,6 @@
 #pragma once
 // Debug views (settings.hpp, DebugView): the numbers behind each view, one per pixel, and the
-// heat map with a legend that Renderer::render() draws from them. README, "Debug views", says
+// heat map with a legend that Renderer::render() draws from them. docs/debug-views.md says
 // what each view counts.
 
 #include <cstdint>

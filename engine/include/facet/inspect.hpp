@@ -58,7 +58,7 @@ struct InspectedTexel {
     bool operator==(const InspectedTexel&) const = default;
 };
 
-/// The terms of the lighting formula (conventions §6) at a Phong fragment.
+/// The terms of the lighting formula (spec §6) at a Phong fragment.
 struct InspectedLighting {
     glm::vec3 normal{0.0f};  ///< interpolated and renormalised (zero stays zero)
     glm::vec3 toLight{0.0f}, toEye{0.0f}, halfway{0.0f};  ///< l, v, h (unit or zero)

@@ -1,5 +1,5 @@
 #pragma once
-// The Phong reflection model of conventions §6 at one surface point:
+// The Phong reflection model of spec §6 at one surface point:
 //
 //     I = Ia·Ka + Id · ( Kd · max(0, n·l) + Ks · max(0, n·h)^s )
 //

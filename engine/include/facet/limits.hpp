@@ -1,5 +1,5 @@
 #pragma once
-// The resource limits for hostile or mistaken input, in one place (README, "Limits"). Each is
+// The resource limits for hostile or mistaken input, in one place (spec §12). Each is
 // checked before the memory it guards is allocated, and the error names the limit.
 
 #include <cstddef>
@@ -11,7 +11,7 @@
 
 namespace facet {
 
-/// Largest image side in pixels (conventions §1): scene images, textures, --size, windows.
+/// Largest image side in pixels (spec §1): scene images, textures, --size, windows.
 inline constexpr int kMaxImageSide = 16384;
 
 /// Largest input file (scene, OFF, OBJ, MTL, texture) read into memory: 1 GiB.

@@ -1,5 +1,5 @@
 #pragma once
-// Vertex normals for lighting (conventions §6) and the "normals" display (§8). The file's own
+// Vertex normals for lighting (spec §6) and the "normals" display (§8). The file's own
 // normals when it has them (Mesh::normals); else computed per position (Mesh::positionIds), so
 // the vertices an OBJ split along a texture seam share one normal and no shading seam shows.
 

@@ -1,6 +1,6 @@
 #pragma once
 // The reference path: a deliberately simple renderer in double precision that follows the
-// conventions literally (no fixed point, no tiling, no cleverness). It is the oracle the fast
+// specification literally (no fixed point, no tiling, no cleverness). It is the oracle the fast
 // path is tested against and the executable specification of what a correct image is.
 
 #include <cstdint>
@@ -36,7 +36,7 @@ struct Image {
     std::vector<std::uint8_t> ambiguous;
     bool cancelled = false;  ///< the Progress callback stopped it: the picture is incomplete
 
-    /// 8-bit RGBA with the conventions' rounding (clamp, round to nearest), packed like
+    /// 8-bit RGBA with spec §5's rounding (clamp, round to nearest), packed like
     /// Framebuffer::color.
     std::vector<std::uint32_t> toRgba() const;
 };
@@ -59,7 +59,7 @@ struct Input {
     glm::dvec3 eye{0.0};               ///< Phong: camera centre in world space
 };
 
-/// Clip-space positions of the scene's mesh, computed directly from conventions §4 in double.
+/// Clip-space positions of the scene's mesh, computed directly from spec §4 in double.
 std::vector<glm::dvec4> projectScene(const Scene& scene);
 
 /// Clip-space position of one world-space point, by the same formula as projectScene().

@@ -61,7 +61,7 @@ struct RenderStats {
 };
 
 /// Near distance for a draw: the setting when positive, else 1e-3 of the mesh's bounding box
-/// diagonal (conventions §4, "a small fraction of the scene's size").
+/// diagonal (spec §4, "a small fraction of the scene's size").
 double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh);
 
 /// Renders frames; keeps scratch buffers so a steady frame size allocates nothing per frame.

@@ -1,5 +1,5 @@
 #pragma once
-// The contents of a .scene file (conventions §1) plus the mesh it names. Plain data: the viewer
+// The contents of a .scene file (spec §1) plus the mesh it names. Plain data: the viewer
 // edits these fields directly between frames.
 
 #include <memory>
@@ -36,7 +36,7 @@ struct Light {
     bool operator==(const Light&) const = default;
 };
 
-/// Phong material coefficients (conventions §6).
+/// Phong material coefficients (spec §6).
 struct Material {
     double ka = 0.5;  ///< ambient
     double kd = 0.5;  ///< diffuse

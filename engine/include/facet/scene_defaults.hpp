@@ -1,5 +1,5 @@
 #pragma once
-// What a scene opens with (conventions §9): one rule for the CLI, the viewer and library users,
+// What a scene opens with (spec §9): one rule for the CLI, the viewer and library users,
 // whichever route opened the file (a .scene, a bare mesh, a scene saved from a bare mesh).
 
 #include "facet/mesh.hpp"

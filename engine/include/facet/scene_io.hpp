@@ -1,5 +1,5 @@
 #pragma once
-// The .scene format (conventions §1): ten line-oriented fields, the last optional; a bare mesh
+// The .scene format (spec §1): ten line-oriented fields, the last optional; a bare mesh
 // opened as a scene (§3b); and the writer that saves a scene back to that format.
 
 #include <optional>
@@ -40,11 +40,11 @@ enum class FileKind { unknown, scene, mesh, image };
 /// neither tells (also for a file that cannot be read).
 FileKind fileKind(const std::string& path);
 
-/// Image size a bare mesh gets when none is given (conventions §3b).
+/// Image size a bare mesh gets when none is given (spec §3b).
 inline constexpr int kBareMeshWidth = 1280;
 inline constexpr int kBareMeshHeight = 720;
 
-/// The world axis a bare mesh stands on (conventions §3b): +Y by default, +Z for models made
+/// The world axis a bare mesh stands on (spec §3b): +Y by default, +Z for models made
 /// Z-up (scans, CAD), +X for the rest.
 enum class UpAxis { X, Y, Z };
 
@@ -57,7 +57,7 @@ std::string_view toString(UpAxis axis);
 /// The world direction `axis` names, a unit vector.
 glm::dvec3 upVector(UpAxis axis);
 
-/// The scene conventions §3b gives a bare mesh at `width` × `height`: a three-quarter view of its
+/// The scene spec §3b gives a bare mesh at `width` × `height`: a three-quarter view of its
 /// bounding sphere with `up` up on screen (the camera's y hint is its opposite, as the course's
 /// (0, −1, 0) is for +Y), a point light near the camera, a neutral material. Scene::path and
 /// meshPath are `meshPath`; no texture is loaded.
@@ -84,7 +84,7 @@ Result<Scene> openSceneFile(const std::string& path, int width = kBareMeshWidth,
 Result<Scene> openSceneFile(const std::string& path, const OpenOptions& options,
                             const LoadControl* control = nullptr);
 
-/// The .scene text (conventions §1) of `scene`: mesh and texture paths relative to the folder
+/// The .scene text (spec §1) of `scene`: mesh and texture paths relative to the folder
 /// of `sceneFile`, numbers in shortest round-trip form, so loading it gives the same scene.
 Result<std::string> sceneText(const Scene& scene, const std::string& sceneFile);
 

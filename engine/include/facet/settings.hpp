@@ -21,16 +21,16 @@ enum class ShaderKind { Simple, Painter, Depth, Texture };
 /// in between: the classic speed/accuracy compromise of 1990s software renderers.
 enum class Interp { Affine, Subdivided, Perspective };
 
-/// Lighting (conventions §6): none (vertex colours as they are), Gouraud (the formula per
+/// Lighting (spec §6): none (vertex colours as they are), Gouraud (the formula per
 /// vertex, the lit colour interpolated) or Phong (normal interpolated, renormalised, lit per
 /// pixel).
 enum class Lighting { Off, Gouraud, Phong };
 
-/// Texture filtering (conventions §7); Trilinear picks the mip level from the screen-space
+/// Texture filtering (spec §7); Trilinear picks the mip level from the screen-space
 /// derivatives of (u, v).
 enum class TextureFilter { Nearest, Bilinear, Trilinear };
 
-/// Debug views (README, "Debug views"): the frame coloured by what the pipeline did at each
+/// Debug views (docs/debug-views.md): the frame coloured by what the pipeline did at each
 /// pixel instead of by the shader, with a legend. None is the normal image.
 enum class DebugView { None, Overdraw, TriangleSize, BinLoad, DepthTest, TextureLod, InterpError };
 
@@ -38,7 +38,7 @@ enum class DebugView { None, Overdraw, TriangleSize, BinLoad, DepthTest, Texture
 inline constexpr int kMinSubdivision = 2;
 inline constexpr int kMaxSubdivision = 256;
 
-/// Fewest and most fractional bits of the sub-pixel grid vertices are snapped to (conventions
+/// Fewest and most fractional bits of the sub-pixel grid vertices are snapped to (spec
 /// §5); the engine clamps RenderSettings::subPixelBits to this range.
 inline constexpr int kMinSubPixelBits = 2;
 inline constexpr int kMaxSubPixelBits = 8;
@@ -67,7 +67,7 @@ struct RenderSettings {
     DebugView view = DebugView::None;  ///< a debug view instead of the shaded image
     /// Samples per pixel of multisampling: 1 (off), 2, 4 or 8 (others normalised by
     /// msaaSamples()). Coverage and depth per sample at the standard positions, shading once per
-    /// pixel, a box-filter resolve (README, "Multisampling"); Solid mode only, lines and points
+    /// pixel, a box-filter resolve (spec §11); Solid mode only, lines and points
     /// stay one sample. Combines with supersample (each supersampled pixel multisampled).
     int msaa = 1;
 

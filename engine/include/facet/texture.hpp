@@ -1,5 +1,5 @@
 #pragma once
-// Textures (conventions §7): an RGBA8 image with its mip chain. Texels stay 8-bit (4 bytes each,
+// Textures (spec §7): an RGBA8 image with its mip chain. Texels stay 8-bit (4 bytes each,
 // a quarter of float storage, so more of the image stays in cache); the samplers that read them
 // live with the pixel loops (fast) and the reference renderer (double).
 

@@ -1,5 +1,5 @@
 #pragma once
-// Triangle coverage on a fixed-point sub-pixel grid (conventions §5).
+// Triangle coverage on a fixed-point sub-pixel grid (spec §5).
 //
 // Vertices are snapped to 1/256 px. Edge functions are then exact 64-bit integers, so the
 // top-left rule is decided without rounding: two triangles sharing an edge see the same integers

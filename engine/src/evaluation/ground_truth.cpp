@@ -1,7 +1,7 @@
 // Ground truth by supersampling the reference path (ground_truth.hpp).
 //
 // The reference renders the scene at N times the size: width·N, height·N and focal·N. The
-// principal point is half the image size (conventions §4), so it scales with it, and the big
+// principal point is half the image size (spec §4), so it scales with it, and the big
 // image's pixel centre (I + ½, J + ½) lands at ((I + ½)/N, (J + ½)/N) in the frame's pixels:
 // the sub-sample centres sit at (k + ½)/N inside each pixel, an N×N grid that covers the pixel
 // evenly. Averaging each N×N block (a box filter) approximates the integral of the image over

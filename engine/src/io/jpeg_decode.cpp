@@ -1,8 +1,9 @@
 // JPEG through libjpeg-turbo. Errors arrive by longjmp, so the decompressor lives in a JpegJob
 // owned by the caller of the one function that calls setjmp. Settings: the library's defaults,
-// JDCT_ISLOW and fancy upsampling, the closest to stb_image (README, "Textures" has the measured
-// difference). Progressive files are stopped after kMaxJpegScans scans, each being a pass over
-// the image; corrupt-data warnings are silent and the decoder fills what is missing, as stb did.
+// JDCT_ISLOW and fancy upsampling, the closest to stb_image (docs/fuzzing.md, "Texture decoders",
+// has the measured difference). Progressive files are stopped after kMaxJpegScans scans, each being
+// a pass over the image; corrupt-data warnings are silent and the decoder fills what is missing, as
+// stb did.
 
 #include <cstdio>  // jpeglib.h needs FILE and size_t first
 

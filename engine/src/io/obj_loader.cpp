@@ -1,4 +1,4 @@
-// The .obj reader (conventions §3) on top of tinyobjloader.
+// The .obj reader (spec §3) on top of tinyobjloader.
 //
 // tinyobjloader is lenient where this project wants errors: it reads "nan" or "abc" as 0, accepts
 // out-of-range indices with a warning (and its ear-clipper then reads past its arrays for
@@ -286,7 +286,7 @@ struct CornerKeyHash {
     }
 };
 
-// True when every corner of every face names a normal (conventions §3: only then are the
+// True when every corner of every face names a normal (spec §3: only then are the
 // file's normals used; a partial set would leave some vertices without one).
 bool everyCornerHasNormal(const tinyobj::attrib_t& attrib,
                           const std::vector<tinyobj::shape_t>& shapes) {

@@ -1,4 +1,4 @@
-// The .off reader (conventions §2): the course's line-oriented flavour and standard OFF/COFF.
+// The .off reader (spec §2): the course's line-oriented flavour and standard OFF/COFF.
 // Every malformed input becomes an Error naming the file and line; the header's counts are checked
 // against the file size before anything is allocated, so a corrupt header cannot exhaust memory.
 
@@ -188,7 +188,7 @@ Result<Mesh> parseOffText(std::string_view text, const std::string& fileName,
         }
         if (layout == 8) mesh.uvs.emplace_back(v[6], v[7]);
     }
-    // Conventions §2: integer colours above 1 mean the file uses 0-255.
+    // spec §2: integer colours above 1 mean the file uses 0-255.
     if (colorsAllWhole && colorsAbove1) {
         for (auto& c : mesh.colors) c /= 255.0f;
     }

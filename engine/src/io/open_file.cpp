@@ -1,4 +1,4 @@
-// Opening whatever file a user brings (conventions §3b): a .scene, or a bare mesh that gets a
+// Opening whatever file a user brings (spec §3b): a .scene, or a bare mesh that gets a
 // camera, a light and a material of its own. What a file is comes from its first bytes where
 // they tell (so teapot.obj is never parsed as a scene), else from its extension.
 

@@ -1,4 +1,4 @@
-// The .scene reader (conventions §1). Fields are the non-blank, comment-free lines in a fixed
+// The .scene reader (spec §1). Fields are the non-blank, comment-free lines in a fixed
 // order; each error names the physical line and what that field expects, so a missing or extra
 // line shows up as "field X needs N numbers" at the first field that no longer fits.
 
@@ -298,7 +298,7 @@ Result<Scene> loadScene(const std::string& path, const LoadControl* control) {
     scene.meshPath = meshFile;
     scene.mesh = std::make_shared<const Mesh>(std::move(*mesh));
 
-    // The scene's own texture wins over the OBJ's map_Kd (conventions §3).
+    // The scene's own texture wins over the OBJ's map_Kd (spec §3).
     const LoadControl textureControl = meter.sub(meshShare, 1.0f);
     const LoadControl* const texturing = control ? &textureControl : nullptr;
     if (!scene.texturePath.empty()) {

@@ -1,4 +1,4 @@
-// The .scene writer (conventions §1). Numbers are written in the shortest form that reads back
+// The .scene writer (spec §1). Numbers are written in the shortest form that reads back
 // as the same double (std::to_chars, independent of the C locale a GUI may have set), so the
 // loaded scene equals the saved one bit for bit and renders the same image.
 

@@ -1,7 +1,7 @@
 #pragma once
 // Bresenham lines between integer pixels, with every pixel's step index so attributes can be
 // interpolated along the line. Steep lines step along y: the course's routine interpolated them
-// on the transposed pixel and its colours collapsed to one end (conventions §8).
+// on the transposed pixel and its colours collapsed to one end (spec §8).
 //
 // Pixel k of n has major coordinate start + k·sign and minor coordinate
 // m0 + floor((2·k·dm + n) / (2·n)): round to nearest, ties towards +inf. The loop below is the

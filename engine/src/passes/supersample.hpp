@@ -4,7 +4,7 @@
 // frame; it is the engine's answer to silhouette aliasing, and a point on `facet accuracy`'s chart.
 //
 // The big image's camera is resizedCamera() to n times the size: width, height and focal times n.
-// The principal point is half the image (conventions §4), so big pixel (I + ½, J + ½) lands at
+// The principal point is half the image (spec §4), so big pixel (I + ½, J + ½) lands at
 // ((I + ½)/n, (J + ½)/n) in the frame's pixels: an even n×n grid of sample centres in each pixel.
 
 #include <bit>

@@ -159,7 +159,7 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
     const RasterizeFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
     const RasterizeFn blocks = blockLoop(key);
     // Multisampling draws triangles into the per-sample buffer, which starts as the frame's
-    // pixels and is resolved back into it; lines and points stay one sample (README).
+    // pixels and is resolved back into it; lines and points stay one sample (spec §11).
     const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
     const SampleBlock block = sampleBlock(samples);
     Framebuffer& target = samples > 1 ? impl_->samples : frame;

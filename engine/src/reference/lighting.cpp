@@ -1,4 +1,4 @@
-// Conventions §6 in double, written the obvious way: the reference the float path
+// spec §6 in double, written the obvious way: the reference the float path
 // (shading/fast_lighting.hpp) is tested against. facet/lighting.hpp lists the choices for the
 // undefined cases.
 

@@ -1,4 +1,4 @@
-// Rule 1 of the reference path: projection in double, straight from conventions §4.
+// Rule 1 of the reference path: projection in double, straight from spec §4.
 
 #include <glm/geometric.hpp>
 

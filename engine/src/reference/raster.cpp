@@ -1,4 +1,4 @@
-// The reference path: the executable specification of a correct image (conventions §4 to §8).
+// The reference path: the executable specification of a correct image (spec §4 to §8).
 //
 // Everything is double precision and written the obvious way: per triangle, every pixel of its
 // bounding box is tested; per line, every pixel is computed from a closed formula. It is slow on
@@ -9,15 +9,15 @@
 // This folder: raster.cpp (these rules, clipping, triangle coverage and draw()), lines_points.cpp
 // (rules 6, 7), projection.cpp (rule 1), render.cpp (the vertex streams of a scene, rules 3, 10,
 // 14), shading.cpp (weights, lighting, texturing and the depth rule per fragment), samplers.cpp
-// and lighting.cpp (conventions §7 and §6 in double).
+// and lighting.cpp (spec §7 and §6 in double).
 //
 // THE RULES (numbered as in the tests and the fast path)
-//  1. Projection (conventions §4): camera frame z = normalize(look - eye), x = normalize(up × z),
+//  1. Projection (spec §4): camera frame z = normalize(look - eye), x = normalize(up × z),
 //     y = z × x; p_c = R (p - eye) with R's rows x, y, z. Clip space is homogeneous pixel space:
 //     (f·X + w/2·Z, f·Y + h/2·Z, Z, Z), so pixel = clip.xy / clip.w and clip.w is the depth Z.
 //  2. The image starts as the background (0xRRGGBB, byte/255 per channel), depth +inf.
 //  3. Vertex colours are the mesh colours, or white when there are none; for Gouraud lighting
-//     they are replaced by the lit colours shade(rgb, I(p_i, n_i)) (conventions §6).
+//     they are replaced by the lit colours shade(rgb, I(p_i, n_i)) (spec §6).
 //  4. Solid: triangles in index order (one with a NaN or infinite x, y or w has no position and
 //     draws nothing, as in the fast path), clipped against w >= near (Sutherland–Hodgman, new
 //     vertices computed from the inside vertex), fanned (v0, vk, vk+1), then rasterized with the

@@ -79,7 +79,7 @@ Image withSceneInput(const Scene& scene, const RenderSettings& settings, const W
         normals.assign(computed.begin(), computed.end());
     }
     if (settings.lighting == Lighting::Gouraud) {
-        // Conventions §6, per vertex: colour = clamp(rgb · I), I from the formula in double.
+        // spec §6, per vertex: colour = clamp(rgb · I), I from the formula in double.
         for (std::size_t i = 0; i < n; ++i) {
             const double intensity =
                 lightIntensity(positions[i], normals[i], scene.camera.eye, scene.lighting);

@@ -1,4 +1,4 @@
-// The reference samplers (conventions §7 in double precision, no shortcuts).
+// The reference samplers (spec §7 in double precision, no shortcuts).
 
 #include "reference/samplers.hpp"
 

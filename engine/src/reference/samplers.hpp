@@ -1,5 +1,5 @@
 #pragma once
-// The reference samplers: double precision, written straight from conventions §7 without any of
+// The reference samplers: double precision, written straight from spec §7 without any of
 // the fast samplers' shortcuts. The reference renderer uses them; tests hold the fast ones to
 // them.
 

@@ -1,4 +1,4 @@
-// Vertex normals (conventions §6): area weighting comes for free because the un-normalised cross
+// Vertex normals (spec §6): area weighting comes for free because the un-normalised cross
 // product (v1 − v0) × (v2 − v0) is twice the triangle's area times its unit normal.
 
 #include "facet/normals.hpp"

@@ -1,4 +1,4 @@
-// Conventions §9: the settings a freshly opened scene shows.
+// spec §9: the settings a freshly opened scene shows.
 
 #include "facet/scene_defaults.hpp"
 

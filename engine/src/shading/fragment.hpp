@@ -58,7 +58,7 @@ struct RasterContext {
     RasterizeFn blocks = nullptr;
 };
 
-/// Rounds a colour to 8 bits per channel as the conventions say; NaN becomes 0.
+/// Rounds a colour to 8 bits per channel as spec §5 says; NaN becomes 0.
 inline std::uint32_t toByte(float c) {
     const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
     return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
@@ -101,7 +101,7 @@ struct UnitPow {
     float operator()(float x, float s) const { return unitPow(x, s); }
 };
 
-/// The colour of a fragment from its interpolated varyings (conventions §6, §7): vertex or
+/// The colour of a fragment from its interpolated varyings (spec §6, §7): vertex or
 /// Gouraud colour as interpolated; Phong lights the renormalised normal here; the texture
 /// shader returns the texel, times that colour with "combine".
 template <class V>
