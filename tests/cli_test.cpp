@@ -546,7 +546,7 @@ const std::string kModelsDir = std::string(FACET_SHARED_DIR) + "/data/models";
 
 TEST_F(Cli, ABareMeshRendersLitAndItsSavedSceneRendersTheSameBytes) {
     const std::string teapot = kModelsDir + "/teapot.obj";
-    if (!fs::exists(teapot)) GTEST_SKIP() << teapot << " not found";
+    REQUIRE_SHARED_DATA(teapot);
     Outcome r = run("render " + teapot + " -o " + out("a.png") + " --size 640x400 --write-scene " +
                     out("teapot.scene"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
@@ -563,7 +563,7 @@ TEST_F(Cli, ABareMeshRendersLitAndItsSavedSceneRendersTheSameBytes) {
 
 TEST_F(Cli, AResizedScenesSavedCopyRendersTheSameBytes) {
     const std::string spot = std::string(FACET_SHARED_DIR) + "/data/scenes/spot_1280x720.scene";
-    if (!fs::exists(spot)) GTEST_SKIP() << spot << " not found";
+    REQUIRE_SHARED_DATA(spot);
     const std::string opts = " --shader texture --combine --lighting phong";
     Outcome r = run("render " + spot + " -o " + out("a.png") + opts + " --size 480x270" +
                     " --write-scene " + out("spot.scene"));

@@ -29,6 +29,7 @@
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #include "io/stb_image_quiet.hpp"
+#include "shared_data.hpp"
 
 namespace fs = std::filesystem;
 using namespace facet;
@@ -95,7 +96,7 @@ TEST(ImageDecode, PngMatchesStbExactly) {
         EXPECT_TRUE(d.sameSize) << name;
         EXPECT_EQ(d.maxChannel, 0) << name;
     }
-    if (!fs::is_directory(shared("models"))) GTEST_SKIP() << "shared data not found";
+    REQUIRE_SHARED_DATA(shared("models"));
     const Difference spot = againstStb(shared("models/spot_texture.png"));
     EXPECT_TRUE(spot.sameSize);
     EXPECT_EQ(spot.maxChannel, 0);
@@ -111,7 +112,7 @@ TEST(ImageDecode, JpegWithinMeasuredDifferenceOfStb) {
         EXPECT_TRUE(d.sameSize) << name;
         EXPECT_LE(d.maxChannel, 3) << name;
     }
-    if (!fs::is_directory(shared("course"))) GTEST_SKIP() << "shared data not found";
+    REQUIRE_SHARED_DATA(shared("course"));
     const Difference brick = againstStb(shared("course/brick.jpg"));
     EXPECT_TRUE(brick.sameSize);
     EXPECT_LE(brick.maxChannel, 3);

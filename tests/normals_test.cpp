@@ -307,7 +307,7 @@ TEST(NormalsPerPosition, OffVerticesAreEachTheirOwnPosition) {
 
 TEST(NormalsFromTheFile, SuzannesVnAreUsed) {
     const std::string path = std::string(FACET_SHARED_DIR) + "/data/models/suzanne.obj";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found";
+    REQUIRE_SHARED_DATA(path);
     const auto m = facet::loadObj(path);
     ASSERT_TRUE(m) << m.error().what();
     ASSERT_TRUE(m->hasNormals());

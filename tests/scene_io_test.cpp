@@ -19,6 +19,7 @@
 #include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
+#include "shared_data.hpp"
 
 namespace {
 
@@ -70,6 +71,8 @@ TEST_F(SceneIo, FileKindByContentThenExtension) {
     EXPECT_EQ(fileKind(write("t.tga", std::string("\0\0\2\0", 4))), FileKind::image);
     EXPECT_EQ(fileKind(write("x.txt", "hello world\n")), FileKind::unknown);
     EXPECT_EQ(fileKind((dir / "missing.obj").string()), FileKind::unknown);
+    REQUIRE_SHARED_DATA(kShared + "/models/teapot.obj");
+    REQUIRE_SHARED_DATA(kShared + "/scenes/spot_1280x720.scene");
     EXPECT_EQ(fileKind(kShared + "/models/teapot.obj"), FileKind::mesh);
     EXPECT_EQ(fileKind(kShared + "/scenes/spot_1280x720.scene"), FileKind::scene);
 }
@@ -81,6 +84,7 @@ TEST_F(SceneIo, AFileThatIsNeitherSaysWhatWasExpected) {
               std::string::npos)
         << r.error().what();
     EXPECT_NE(r.error().what().find("'hello world'"), std::string::npos);
+    REQUIRE_SHARED_DATA(kShared + "/models/spot_texture.png");
     Result<Scene> image = openSceneFile(kShared + "/models/spot_texture.png");
     ASSERT_FALSE(image);
     EXPECT_NE(image.error().what().find("is an image"), std::string::npos);
@@ -93,7 +97,7 @@ TEST_F(SceneIo, AFileThatIsNeitherSaysWhatWasExpected) {
 TEST_F(SceneIo, ABareMeshIsFramedFromAThreeQuarterViewWithTheCourseUp) {
     for (const char* name : {"teapot.obj", "cow.obj", "stanford-bunny.obj", "suzanne.obj"}) {
         const std::string path = kShared + "/models/" + name;
-        if (!fs::exists(path)) GTEST_SKIP() << path << " not found";
+        REQUIRE_SHARED_DATA(path);
         for (const auto& [w, h] : {std::pair(1280, 720), std::pair(600, 900)}) {
             Result<Scene> r = openSceneFile(path, w, h);
             ASSERT_TRUE(r) << r.error().what();
@@ -133,7 +137,7 @@ TEST_F(SceneIo, ABareMeshIsFramedFromAThreeQuarterViewWithTheCourseUp) {
 
 TEST_F(SceneIo, ASavedSceneLoadsAsTheSameSceneAndRendersTheSameBytes) {
     const std::string spot = kShared + "/scenes/spot_1280x720.scene";
-    if (!fs::exists(spot)) GTEST_SKIP() << spot << " not found";
+    REQUIRE_SHARED_DATA(spot);
     Result<Scene> original = loadScene(spot);
     ASSERT_TRUE(original) << original.error().what();
     // Numbers that need every digit, and a directional light (5 numbers).
@@ -174,7 +178,7 @@ TEST_F(SceneIo, ASavedSceneLoadsAsTheSameSceneAndRendersTheSameBytes) {
 
 TEST_F(SceneIo, ABareMeshSavedAfterMovingTheCameraRendersTheSameBytes) {
     const std::string cow = kShared + "/models/cow.obj";
-    if (!fs::exists(cow)) GTEST_SKIP() << cow << " not found";
+    REQUIRE_SHARED_DATA(cow);
     Result<Scene> scene = openSceneFile(cow, 640, 480);
     ASSERT_TRUE(scene) << scene.error().what();
     scene->camera.eye += glm::dvec3(0.1234567, -0.3, 0.7654321);  // as an orbit would

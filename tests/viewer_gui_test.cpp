@@ -228,7 +228,7 @@ TEST_F(ViewerGui, TheScreenshotKeySavesTheFrame) {
 TEST_F(ViewerGui, CtrlSSavesABareModelAfterOrbitingAsASceneThatRendersTheFrame) {
     REQUIRE_XDOTOOL();
     const std::string teapot = std::string(FACET_SHARED_DIR) + "/data/models/teapot.obj";
-    if (!fs::exists(teapot)) GTEST_SKIP() << teapot << " not found";
+    REQUIRE_SHARED_DATA(teapot);
     const Outcome r = drive("save", "--size " + kWindow1280 + " " + teapot);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     ASSERT_TRUE(fs::exists(path("teapot.scene"))) << r.out;

@@ -52,7 +52,7 @@ TEST_P(OpeningLayout, NoPanelPixelCoversTheFrame) {
     REQUIRE_XVFB();
     const std::string scene =
         std::string(GetParam()) == "default" ? kScene : kShared + "/" + GetParam();
-    if (!fs::exists(scene)) GTEST_SKIP() << scene << " is missing (the shared data)";
+    REQUIRE_SHARED_DATA(scene);
     Result<Scene> loaded = loadScene(scene);
     ASSERT_TRUE(loaded.ok());
     const Camera& sc = loaded->camera;
@@ -345,7 +345,7 @@ TEST_F(ViewerGui, TheScreenshotLandsInThePicturesFolderAndItsPathIsShown) {
 
 TEST_F(ViewerGui, FontsAndTheSideBarFollowTheMonitorsContentScale) {
     REQUIRE_XVFB();
-    if (!have("xprop")) GTEST_SKIP() << "xprop is not installed (Debian package x11-utils)";
+    REQUIRE_PREREQUISITE(have("xprop"), "xprop is not installed (Debian package x11-utils)");
     // GLFW reads the X server's Xft.dpi (192: a scale of 2) as the monitor's content scale.
     // -noreset: the server would otherwise drop the property when xprop disconnects.
     {

@@ -31,6 +31,7 @@
 #include "resources.hpp"
 #include "scene_defaults.hpp"
 #include "settings_map.hpp"
+#include "shared_data.hpp"
 #include "state_file.hpp"
 #include "viewer_model.hpp"
 
@@ -592,7 +593,7 @@ fs::path scratchFolder() {
 }
 
 TEST(ViewerModels, ABareMeshOpensLitAndATexturedSceneWithItsTexture) {
-    if (!fs::exists(kSpotScene)) GTEST_SKIP() << "shared data not found";
+    REQUIRE_SHARED_DATA(kSpotScene);
     ViewerModel m;
     ASSERT_FALSE(m.load(kModels + "/teapot.obj"));
     EXPECT_TRUE(m.bareMesh);
@@ -613,7 +614,7 @@ TEST(ViewerModels, ABareMeshOpensLitAndATexturedSceneWithItsTexture) {
 }
 
 TEST(ViewerModels, LightingUnderTheTextureShaderTurnsCombineOnOrSaysWhy) {
-    if (!fs::exists(kSpotScene)) GTEST_SKIP() << "shared data not found";
+    REQUIRE_SHARED_DATA(kSpotScene);
     ViewerModel m;
     ASSERT_FALSE(m.load(kSpotScene));
     RenderSettings& s = m.settings;
@@ -640,7 +641,7 @@ TEST(ViewerModels, LightingUnderTheTextureShaderTurnsCombineOnOrSaysWhy) {
 TEST(ViewerModels, SavedAfterOrbitingTheFrameRendersByteForByte) {
     const fs::path dir = scratchFolder();
     for (const std::string& file : {kModels + "/cow.obj", kSpotScene}) {
-        if (!fs::exists(file)) GTEST_SKIP() << file << " not found";
+        REQUIRE_SHARED_DATA(file);
         ViewerModel m;
         ASSERT_FALSE(m.load(file));
         m.rotate(37.0, -12.0);
@@ -744,7 +745,7 @@ TEST(ViewerModels, RecentFilesAndTheConfigFolderSurviveARestart) {
 
 TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     const std::string nefertiti = kModels + "/nefertiti.obj";
-    if (!fs::exists(nefertiti)) GTEST_SKIP() << nefertiti << " not found";
+    REQUIRE_SHARED_DATA(nefertiti);
     ViewerModel m;
     ASSERT_FALSE(m.load(kDefaultScene));
     const std::size_t before = m.scene.mesh->triangleCount();
