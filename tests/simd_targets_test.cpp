@@ -174,6 +174,7 @@ void expectEveryTargetGivesTheScalarImage(const Scene& scene, const std::string&
 // depth, the vector bilinear texel and the lane-by-lane texture shading.
 TEST_P(SimdTargets, EveryTargetGivesTheScalarSamples) {
     std::string error;
+    REQUIRE_SHARED_DATA(sharedScenePath(GetParam()));
     const Scene* loaded = loadCached(GetParam(), error);
     ASSERT_NE(loaded, nullptr) << error;
     Scene scene = *loaded;
@@ -278,6 +279,7 @@ TEST_F(SimdTargetsMsaa, SharedEdgesAndDepthTiesGiveTheScalarSamples) {
 
 TEST_P(SimdTargets, EveryTargetGivesTheScalarImage) {
     std::string error;
+    REQUIRE_SHARED_DATA(sharedScenePath(GetParam()));
     const Scene* scene = loadCached(GetParam(), error);
     ASSERT_NE(scene, nullptr) << error;
     expectEveryTargetGivesTheScalarImage(*scene, GetParam());
@@ -313,6 +315,7 @@ Scene smallTriangleScene(const Scene& textured) {
 
 TEST(SimdTargetsSmallTriangles, EveryTargetGivesTheScalarImage) {
     std::string error;
+    REQUIRE_SHARED_DATA(sharedScenePath("course/example_textured"));
     const Scene* textured = loadCached("course/example_textured", error);
     ASSERT_NE(textured, nullptr) << error;
     ASSERT_NE(textured->texture, nullptr);

@@ -693,6 +693,8 @@ TEST(ViewerModels, TheBrowserListsFoldersScenesMeshesAndImages) {
 }
 
 TEST(ViewerModels, ADropOpensMeshesAndScenesTexturesImagesAndRefusesTheRest) {
+    REQUIRE_SHARED_DATA(kModels + "/spot_texture.png");
+    REQUIRE_SHARED_DATA(kModels + "/spot_triangulated.obj");
     const fs::path dir = scratchFolder();
     std::ofstream(dir / "notes.txt") << "hello\n";
     std::ofstream(dir / "mesh.dat") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
@@ -715,6 +717,7 @@ TEST(ViewerModels, ADropOpensMeshesAndScenesTexturesImagesAndRefusesTheRest) {
 }
 
 TEST(ViewerModels, RecentFilesAndTheConfigFolderSurviveARestart) {
+    REQUIRE_SHARED_DATA(kModels + "/cow.obj");
     const fs::path dir = scratchFolder();
     const char* oldXdg = std::getenv("XDG_CONFIG_HOME");
     const std::string keep = oldXdg ? oldXdg : "";
