@@ -97,6 +97,7 @@ charts: build
 
 doc: setup
 	@command -v doxygen >/dev/null || bash scripts/setup-debian.sh doxygen
+	mkdir -p $(BUILD)/doc
 	( cat docs/Doxyfile; echo "OUTPUT_DIRECTORY = $(BUILD)/doc" ) | doxygen -
 	@echo "Open $(abspath $(BUILD))/doc/html/index.html"
 
