@@ -1,7 +1,7 @@
 #pragma once
 // The triangle front end's loop (see front_end.hpp), one function per stage so the loop at the
 // bottom reads as the pipeline does. A template on what receives its triangles, so that the tile
-// renderer's binning is inlined into it (no call through a pointer and a void* per triangle) and
+// renderer's binning is a typed call (none through a pointer and a void* per triangle) and
 // data flows one way: front end -> binning -> coverage -> shading. Screen positions and planes are
 // computed in double from the unsnapped vertices, so interpolation does not inherit the snapping
 // error; only coverage uses the sub-pixel grid (1/256 px, or coarser with
