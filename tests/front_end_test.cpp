@@ -2,8 +2,10 @@
 // hand the rasterizer exactly what the per-corner front end does, bit for bit: the same
 // coverage setups, the same planes, the same counters, on random triangles and on the cases
 // where the stages decide something (degenerate, sub-pixel, near-plane crossing, beyond the
-// guard band, off screen, non-finite).
+// guard band, off screen, non-finite). And the tile renderer's binning (compact records, sorted
+// into tiles) must hand each tile exactly what the front end emitted, restricted to the tile.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "binning/tiles.hpp"
 #include "frontend/front_end.hpp"
 
 namespace facet::detail {
@@ -185,6 +188,118 @@ TEST_P(VertexPass, HandsOnWhatThePerCornerFrontEndDoes) {
     }
 }
 
+/// What reached one tile's rasterizer, as bytes: the coverage (edges, steps, box; not area2,
+/// which no rasterizer reads) and the planes the layout's loops read: the base and the depth
+/// plane, and with varyings the weights' planes and the varyings (a record without varyings
+/// carries no weights: they only interpolate varyings).
+struct TileRecorder {
+    int varyings = 0;
+    int tilesX = 0;
+    std::vector<std::vector<std::byte>> tiles;
+    std::size_t calls = 0;  // counted in the one-thread reference only
+};
+
+void putTile(std::vector<std::byte>& out, int varyings, const CoverageSetup& setup,
+             const Planes& p) {
+    auto put = [&](const void* data, std::size_t n) {
+        const auto* b = static_cast<const std::byte*>(data);
+        out.insert(out.end(), b, b + n);
+    };
+    put(setup.e0, sizeof setup.e0);
+    put(setup.stepX, sizeof setup.stepX);
+    put(setup.stepY, sizeof setup.stepY);
+    put(&setup.box, sizeof setup.box);
+    put(&p.baseX, sizeof p.baseX);
+    put(&p.baseY, sizeof p.baseY);
+    put(p.q, sizeof p.q);
+    if (varyings == 0) return;
+    put(p.l1, sizeof p.l1);
+    put(p.l2, sizeof p.l2);
+    put(p.u1, sizeof p.u1);
+    put(p.u2, sizeof p.u2);
+    const auto n = sizeof(float) * static_cast<std::size_t>(varyings);
+    put(p.a0, n);
+    put(p.d1, n);
+    put(p.d2, n);
+}
+
+/// The tile renderer's rasterizer: its setups are already restricted to one tile.
+std::size_t recordTile(void* context, const CoverageSetup& setup, const Planes& planes) {
+    auto& r = *static_cast<TileRecorder*>(context);
+    const int tile = setup.box.y0 / kTileSize * r.tilesX + setup.box.x0 / kTileSize;
+    putTile(r.tiles[static_cast<std::size_t>(tile)], r.varyings, setup, planes);
+    return 1;
+}
+
+/// The front end's rasterizer, cutting each setup at the tiles as binning does.
+std::size_t recordCut(void* context, const CoverageSetup& setup, const Planes& planes) {
+    auto& r = *static_cast<TileRecorder*>(context);
+    for (std::size_t tile = 0; tile < r.tiles.size(); ++tile) {
+        const int x0 = static_cast<int>(tile) % r.tilesX * kTileSize;
+        const int y0 = static_cast<int>(tile) / r.tilesX * kTileSize;
+        const PixelRect rect{x0, y0, std::min(x0 + kTileSize, kWidth) - 1,
+                             std::min(y0 + kTileSize, kHeight) - 1};
+        const CoverageSetup cut = restrictSetup(setup, rect);
+        if (cut.box.empty()) continue;
+        putTile(r.tiles[tile], r.varyings, cut, planes);
+        ++r.calls;
+    }
+    return 0;
+}
+
+class Binning : public testing::TestWithParam<Config> {};
+
+TEST_P(Binning, HandsEachTileWhatTheFrontEndEmitted) {
+    const Config c = GetParam();
+    Mesh mesh = cases();
+    // Triangles over several tiles, and one over all of them, besides the cases' small ones.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> x(-40.0f, 360.0f), y(-40.0f, 240.0f);
+    for (int i = 0; i < 60; ++i) {
+        const float w = 1.0f + static_cast<float>(i % 5);
+        mesh.add({x(rng) * w, y(rng) * w, 0.0f, w}, {x(rng) * w, y(rng) * w, 0.0f, w},
+                 {x(rng) * w, y(rng) * w, 0.0f, w});
+    }
+    const DrawInput in = mesh.input();
+    const VaryingLayout layout{c.color, false, false};
+    const int tilesX = (kWidth + kTileSize - 1) / kTileSize;
+    const int tiles = tilesX * ((kHeight + kTileSize - 1) / kTileSize);
+    auto recorder = [&] {
+        TileRecorder r;
+        r.varyings = layout.count();
+        r.tilesX = tilesX;
+        r.tiles.resize(static_cast<std::size_t>(tiles));
+        return r;
+    };
+
+    TileRecorder expected = recorder();
+    RenderStats frontStats;
+    drawTriangles(in, layout, c.cull, kWidth, kHeight, 0, mesh.indices.size() / 3, &recordCut,
+                  &expected, frontStats, c.bits, c.reach);
+    EXPECT_GT(expected.calls, 400u);  // not vacuous: many triangles, some over several tiles
+    std::size_t multiTile = 0;
+    for (const auto& t : expected.tiles) multiTile += t.empty() ? 0 : 1;
+    EXPECT_EQ(multiTile, static_cast<std::size_t>(tiles));
+
+    for (const int threads : {1, 2}) {
+        TileRecorder binned = recorder();
+        RenderStats stats;
+        TileRenderer renderer;
+        renderer.draw(in, layout, c.cull, kWidth, kHeight, &recordTile, &binned, threads, c.bits,
+                      stats, c.reach);
+        for (std::size_t t = 0; t < expected.tiles.size(); ++t)
+            EXPECT_TRUE(binned.tiles[t] == expected.tiles[t])
+                << "tile " << t << ", " << threads << " threads";
+        EXPECT_EQ(stats.trianglesIn, frontStats.trianglesIn);
+        EXPECT_EQ(stats.trianglesClipped, frontStats.trianglesClipped);
+        EXPECT_EQ(stats.trianglesCulled, frontStats.trianglesCulled);
+        EXPECT_EQ(stats.trianglesRasterized, frontStats.trianglesRasterized);
+        // The per-stage clocks are filled (their values are not asserted: speed never is).
+        EXPECT_GT(stats.frontEndMs, 0.0);
+        EXPECT_GT(stats.binningMs, 0.0);
+    }
+}
+
 std::string configName(const testing::TestParamInfo<Config>& param) {
     const Config& c = param.param;
     return std::string(c.cull ? "cull" : "nocull") + "_bits" + std::to_string(c.bits) + "_reach" +
@@ -192,6 +307,10 @@ std::string configName(const testing::TestParamInfo<Config>& param) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Configs, VertexPass,
+                         testing::Values(Config{false, 8, 0, false}, Config{true, 8, 0, true},
+                                         Config{false, 4, 0, true}, Config{false, 8, 96, false}),
+                         configName);
+INSTANTIATE_TEST_SUITE_P(Configs, Binning,
                          testing::Values(Config{false, 8, 0, false}, Config{true, 8, 0, true},
                                          Config{false, 4, 0, true}, Config{false, 8, 96, false}),
                          configName);

@@ -3,17 +3,20 @@
 #include "binning/tiles.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
 
 #include <omp.h>
 
+#include "frontend/front_end_loop.hpp"
+
 namespace facet::detail {
 namespace {
 
 /// Triangles each thread's front end takes per batch. One thread: few enough that the batch's
-/// records (168 to 300 bytes each) and bins are still in the core's L2 when its tiles read them
+/// records (64 to 240 bytes each) and bins are still in the core's L2 when its tiles read them
 /// (with 8192 the tile loop waited on memory for every record). Several threads: every batch
 /// costs two barriers, and on a loaded machine a barrier waits for a descheduled thread's next
 /// time slice; the bunny at 2 threads took twice as long with 2048 as with 8192 (load 17 on 2
@@ -21,18 +24,29 @@ namespace {
 constexpr std::size_t kBatchPerThread = 2048;
 constexpr std::size_t kBatchPerThreadShared = 8192;
 
-/// A packed record: the setup, then the planes' fields before the varyings, then a0, d1 and d2
-/// of the layout's varyings only.
-constexpr std::size_t kSetupBytes = sizeof(CoverageSetup);
-constexpr std::size_t kPlaneHeadBytes = offsetof(Planes, a0);
-static_assert(std::is_trivially_copyable_v<CoverageSetup> && std::is_trivially_copyable_v<Planes> &&
-              std::is_standard_layout_v<Planes>);
+/// A record's head: the snapped triangle (SnappedTriangle in 32 bits: the guard band keeps its
+/// coordinates, relative to its box, far below 2^31) and the planes' base and depth plane. A
+/// draw without varyings needs nothing more (the weights of vertices 1 and 2 only interpolate
+/// varyings), so its record is these 60 bytes in one 64-byte line; with varyings the weights'
+/// planes (l1, l2, u1, u2) and a0, d1 and d2 of the layout's varyings follow.
+struct RecordHead {
+    PixelRect box;
+    std::int32_t x[3], y[3];
+    int baseX, baseY;
+    float q[3];
+};
+static_assert(sizeof(RecordHead) == 60 && alignof(RecordHead) == 4);
+static_assert(std::is_trivially_copyable_v<RecordHead> && std::is_trivially_copyable_v<Planes>);
 
-/// Bytes of a record with `varyings` varyings, rounded up so every record stays 8-byte aligned.
+/// Bytes of the weights' planes: l1, l2, u1 and u2, adjacent in Planes.
+constexpr std::size_t kWeightBytes = 12 * sizeof(float);
+static_assert(offsetof(Planes, u2) + 3 * sizeof(float) - offsetof(Planes, l1) == kWeightBytes);
+
+/// Bytes of a record with `varyings` varyings: a whole line without them, else 4-byte aligned.
 constexpr std::size_t recordBytes(int varyings) {
-    const std::size_t bytes =
-        kSetupBytes + kPlaneHeadBytes + 3 * sizeof(float) * static_cast<std::size_t>(varyings);
-    return (bytes + 7) / 8 * 8;
+    if (varyings == 0) return sizeof(TileRenderer::Line);
+    return sizeof(RecordHead) + kWeightBytes +
+           3 * sizeof(float) * static_cast<std::size_t>(varyings);
 }
 
 /// Whether `inner` lies within `outer`.
@@ -46,6 +60,87 @@ void addCounters(RenderStats& to, const RenderStats& from) {
     to.trianglesCulled += from.trianglesCulled;
     to.trianglesClipped += from.trianglesClipped;
     to.trianglesRasterized += from.trianglesRasterized;
+    to.frontEndMs += from.frontEndMs;
+    to.binningMs += from.binningMs;
+}
+
+/// The front end's receiver in the tile renderer: appends each triangle's record to the slice
+/// and one entry per tile its box touches. A type the front end's loop is instantiated with, so
+/// this is a direct call, not one through a pointer and a void*. (GCC 12 keeps it out of line;
+/// forcing it inline made it outline the loop's per-triangle lambda instead, 12 % more
+/// instructions in the front end on the bunny.)
+struct Binner {
+    TileRenderer::Slice& slice;
+
+    std::size_t operator()(const SnappedTriangle& tri, const Planes& planes) const {
+        TileRenderer::Slice& s = slice;
+        const std::size_t at = s.used;
+        if (at + s.recordBytes > s.records.size() * sizeof(TileRenderer::Line))
+            s.records.resize(std::max(2 * s.records.size(),
+                                      (at + s.recordBytes) / sizeof(TileRenderer::Line) + 1));
+        std::byte* record = reinterpret_cast<std::byte*>(s.records.data()) + at;
+        s.used = at + s.recordBytes;
+        RecordHead head;
+        head.box = tri.box;
+        for (int i = 0; i < 3; ++i) {
+            head.x[i] = static_cast<std::int32_t>(tri.x[i]);
+            head.y[i] = static_cast<std::int32_t>(tri.y[i]);
+        }
+        head.baseX = planes.baseX;
+        head.baseY = planes.baseY;
+        std::memcpy(head.q, planes.q, sizeof head.q);
+        std::memcpy(record, &head, sizeof head);
+        if (s.varyings > 0) {
+            std::byte* rest = record + sizeof head;
+            std::memcpy(rest, planes.l1, kWeightBytes);
+            rest += kWeightBytes;
+            const std::size_t n = sizeof(float) * static_cast<std::size_t>(s.varyings);
+            std::memcpy(rest, planes.a0, n);
+            std::memcpy(rest + n, planes.d1, n);
+            std::memcpy(rest + 2 * n, planes.d2, n);
+        }
+
+        const auto offset = static_cast<std::uint32_t>(at);
+        const PixelRect& b = tri.box;
+        const int tx0 = b.x0 / kTileSize, tx1 = b.x1 / kTileSize;
+        const int ty0 = b.y0 / kTileSize, ty1 = b.y1 / kTileSize;
+        const auto tiles = static_cast<std::size_t>((tx1 - tx0 + 1) * (ty1 - ty0 + 1));
+        if (s.entryCount + tiles > s.entries.size())
+            s.entries.resize(std::max(2 * s.entries.size(), s.entryCount + tiles));
+        TileRenderer::BinEntry* entry = s.entries.data() + s.entryCount;
+        s.entryCount += tiles;
+        if (tiles == 1) {  // most triangles of a dense mesh lie in one tile
+            *entry = {static_cast<std::uint32_t>(ty0 * s.tilesX + tx0), offset};
+            return 0;
+        }
+        for (int ty = ty0; ty <= ty1; ++ty)
+            for (int tx = tx0; tx <= tx1; ++tx)
+                *entry++ = {static_cast<std::uint32_t>(ty * s.tilesX + tx), offset};
+        return 0;  // fragments are counted when the tiles are rasterized
+    }
+};
+
+/// Sorts the slice's entries by tile (a counting sort, stable: each tile's records stay in
+/// submission order) into order[start[t] … start[t + 1]).
+void sortByTile(TileRenderer::Slice& s) {
+    std::fill(s.start.begin(), s.start.end(), 0u);
+    const TileRenderer::BinEntry* entries = s.entries.data();
+    for (std::size_t i = 0; i < s.entryCount; ++i) ++s.start[entries[i].tile + 1];
+    const std::size_t tiles = s.cursor.size();
+    for (std::size_t t = 0; t < tiles; ++t) {
+        s.start[t + 1] += s.start[t];
+        s.cursor[t] = s.start[t];
+    }
+    if (s.order.size() < s.entryCount) s.order.resize(std::max(2 * s.order.size(), s.entryCount));
+    std::uint32_t* order = s.order.data();
+    for (std::size_t i = 0; i < s.entryCount; ++i)
+        order[s.cursor[entries[i].tile]++] = entries[i].offset;
+}
+
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
 }  // namespace
@@ -55,34 +150,6 @@ int resolveThreads(int requested) {
     return std::max(1, omp_get_num_procs());
 }
 
-std::size_t TileRenderer::binTriangle(void* context, const CoverageSetup& setup,
-                                      const Planes& planes) {
-    Slice& slice = *static_cast<Slice*>(context);
-    const std::size_t at = slice.used;
-    if (at + slice.recordBytes > slice.records.size())
-        slice.records.resize(std::max(2 * slice.records.size(), at + slice.recordBytes));
-    std::byte* record = slice.records.data() + at;
-    slice.used = at + slice.recordBytes;
-    std::memcpy(record, &setup, kSetupBytes);
-    std::memcpy(record + kSetupBytes, &planes, kPlaneHeadBytes);
-    const std::size_t n = sizeof(float) * static_cast<std::size_t>(slice.varyings);
-    std::byte* varyings = record + kSetupBytes + kPlaneHeadBytes;
-    std::memcpy(varyings, planes.a0, n);
-    std::memcpy(varyings + n, planes.d1, n);
-    std::memcpy(varyings + 2 * n, planes.d2, n);
-
-    const auto offset = static_cast<std::uint32_t>(at);
-    const PixelRect& b = setup.box;
-    for (int ty = b.y0 / kTileSize; ty <= b.y1 / kTileSize; ++ty)
-        for (int tx = b.x0 / kTileSize; tx <= b.x1 / kTileSize; ++tx) {
-            const auto tile = static_cast<std::size_t>(ty * slice.tilesX + tx);
-            std::vector<std::uint32_t>& bin = slice.bins[tile];
-            if (bin.empty()) slice.touched.push_back(static_cast<std::uint32_t>(tile));
-            bin.push_back(offset);
-        }
-    return 0;  // fragments are counted when the tiles are rasterized
-}
-
 std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int height,
                                         RasterizeFn rasterize, void* context, std::size_t first,
                                         std::size_t count) const {
@@ -90,34 +157,50 @@ std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int hei
     const PixelRect rect{x0, y0, std::min(x0 + kTileSize, width) - 1,
                          std::min(y0 + kTileSize, height) - 1};
     std::size_t fragments = 0;
+    SnappedTriangle tri{};
     CoverageSetup setup;
-    Planes planes{};  // the varyings past the layout's are never read
+    Planes planes{};  // what the record does not hold is never read (RecordHead)
+    const auto at = static_cast<std::size_t>(tile);
     for (std::size_t s = first; s < first + count; ++s) {  // in submission order
         const Slice& slice = slices_[s];
         const std::size_t n = sizeof(float) * static_cast<std::size_t>(slice.varyings);
-        for (const std::uint32_t r : slice.bins[static_cast<std::size_t>(tile)]) {
-            const std::byte* record = slice.records.data() + r;
-            std::memcpy(&setup, record, kSetupBytes);
+        const auto* records = reinterpret_cast<const std::byte*>(slice.records.data());
+        for (std::uint32_t k = slice.start[at]; k < slice.start[at + 1]; ++k) {
+            const std::byte* record = records + slice.order[k];
+            RecordHead head;
+            std::memcpy(&head, record, sizeof head);
+            tri.box = head.box;
+            for (int i = 0; i < 3; ++i) {
+                tri.x[i] = head.x[i];
+                tri.y[i] = head.y[i];
+            }
+            edgesOf(tri, setup);
             // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
             if (!contains(rect, setup.box)) {
                 setup = restrictSetup(setup, rect);
                 if (setup.box.empty()) continue;
             }
-            // Planes is trivially copyable; its head is a prefix of its layout.
-            std::memcpy(static_cast<void*>(&planes), record + kSetupBytes, kPlaneHeadBytes);
-            const std::byte* varyings = record + kSetupBytes + kPlaneHeadBytes;
-            std::memcpy(planes.a0, varyings, n);
-            std::memcpy(planes.d1, varyings + n, n);
-            std::memcpy(planes.d2, varyings + 2 * n, n);
+            planes.baseX = head.baseX;
+            planes.baseY = head.baseY;
+            std::memcpy(planes.q, head.q, sizeof head.q);
+            if (n > 0) {
+                const std::byte* rest = record + sizeof head;
+                std::memcpy(planes.l1, rest, kWeightBytes);
+                rest += kWeightBytes;
+                std::memcpy(planes.a0, rest, n);
+                std::memcpy(planes.d1, rest + n, n);
+                std::memcpy(planes.d2, rest + 2 * n, n);
+            }
             fragments += rasterize(context, setup, planes);
         }
     }
     return fragments;
 }
 
-void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
-                        int height, RasterizeFn rasterize, void* context, int threads,
-                        int subPixelBits, RenderStats& stats, int sampleReach) {
+void TileRenderer::draw(const DrawJob& job, RasterizeFn rasterize, void* context, int threads,
+                        RenderStats& stats) {
+    const DrawInput& in = *job.in;
+    const int width = job.width, height = job.height;
     const std::size_t triangles = in.indices.size() / 3;
     if (width <= 0 || height <= 0 || triangles == 0) return;
     const int tilesX = (width + kTileSize - 1) / kTileSize;
@@ -134,22 +217,24 @@ void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool c
     for (std::size_t s = 0; s < sets * n; ++s) {
         Slice& slice = slices_[s];
         slice.tilesX = tilesX;
-        if (slice.bins.size() != static_cast<std::size_t>(tiles)) {
-            slice.bins.assign(static_cast<std::size_t>(tiles), {});
-            slice.touched.clear();
-        }
+        slice.start.assign(static_cast<std::size_t>(tiles) + 1, 0u);  // no allocation when equal
+        slice.cursor.resize(static_cast<std::size_t>(tiles));
+        slice.entryCount = 0;
+        slice.used = 0;
         slice.stats = {};
-        slice.varyings = layout.count();
+        slice.varyings = job.layout.count();
         slice.recordBytes = recordBytes(slice.varyings);
     }
     const std::size_t batch = (n == 1 ? kBatchPerThread : kBatchPerThreadShared) * n;
     const std::size_t batches = (triangles + batch - 1) / batch;
     const int slices = static_cast<int>(n);
     const int tasks = slices + tiles;  // per step: the front end's slices, then the tiles
-    const ScreenSpace space = ScreenSpace::of(width, height, in.nearPlane, subPixelBits);
+    const ScreenSpace space = ScreenSpace::of(width, height, in.nearPlane, job.subPixelBits);
     const auto vertices = static_cast<std::ptrdiff_t>(in.clip.size());
     screen_.resize(in.clip.size());  // grown, never shrunk: a steady frame allocates nothing
     ScreenVertex* screen = screen_.data();
+    DrawJob binned = job;
+    binned.screen = screen;
 
 #pragma omp parallel num_threads(slices)
     {
@@ -177,14 +262,20 @@ void TileRenderer::draw(const DrawInput& in, const VaryingLayout& layout, bool c
                 if (t < slices) {
                     if (k == batches) continue;
                     Slice& slice = produce[t];
-                    for (const std::uint32_t tile : slice.touched) slice.bins[tile].clear();
-                    slice.touched.clear();
+                    slice.entryCount = 0;
                     slice.used = 0;
                     const auto s = static_cast<std::size_t>(t);
                     const std::size_t first = b0 + (b1 - b0) * s / n;
                     const std::size_t end = b0 + (b1 - b0) * (s + 1) / n;
-                    drawTriangles(in, layout, cull, width, height, first, end, &binTriangle, &slice,
-                                  slice.stats, subPixelBits, sampleReach, screen);
+                    // Clocked per batch, not per triangle: the front end with the records'
+                    // writes inlined, then the sort of its records into the tiles' bins.
+                    const Clock::time_point t0 = Clock::now();
+                    front::frontEnd(binned, first, end, Binner{slice}, slice.stats);
+                    const Clock::time_point t1 = Clock::now();
+                    sortByTile(slice);
+                    const Clock::time_point t2 = Clock::now();
+                    slice.stats.frontEndMs += msBetween(t0, t1);
+                    slice.stats.binningMs += msBetween(t1, t2);
                 } else if (k > 0) {
                     fragments += rasterizeTile(t - slices, tilesX, width, height, rasterize,
                                                context, consume, n);

@@ -2,11 +2,11 @@
 // Sort-middle parallel rasterization. A vertex pass first derives what the front end needs of
 // each vertex (ScreenVertex). Then the draw's triangles are taken in batches; for each batch the
 // front end runs over contiguous slices of the triangles, one per thread, and bins what it
-// produces (coverage setup + planes) into 64×64 pixel tiles; each tile is then rasterized by one
-// thread, visiting the slices in order, while the next batch is being binned. So every pixel
-// sees its fragments in submission order, exactly as one thread would draw them: the image does
-// not depend on the thread count, and no lock guards the framebuffer because no two threads ever
-// own the same tile.
+// produces (snapped triangle + planes, a compact record) into 64×64 pixel tiles; each tile is then
+// rasterized by one thread, visiting the slices in order, while the next batch is being binned. So
+// every pixel sees its fragments in submission order, exactly as one thread would draw them: the
+// image does not depend on the thread count, and no lock guards the framebuffer because no two
+// threads ever own the same tile.
 
 #include <cstddef>
 #include <cstdint>
@@ -27,31 +27,48 @@ int resolveThreads(int requested);
 /// frame allocates nothing.
 class TileRenderer {
   public:
-    /// Draws triangles like drawTriangles() over the whole draw, rasterizing with `rasterize`
-    /// (whose `context` must be safe to share between threads for disjoint tiles), on a grid of
-    /// 1/2^subPixelBits px, boxes reaching `sampleReach` grid units past pixel centres
-    /// (multisampling). Adds the front end's counters and the fragments to `stats`.
+    /// Draws the triangles of `job` like drawTriangles() over the whole draw, rasterizing with
+    /// `rasterize` (whose `context` must be safe to share between threads for disjoint tiles).
+    /// Adds the front end's counters, its and binning's times and the fragments to `stats`.
+    void draw(const DrawJob& job, RasterizeFn rasterize, void* context, int threads,
+              RenderStats& stats);
+    /// draw() of the job these name (job.screen is the tile renderer's own vertex pass).
     void draw(const DrawInput& in, const VaryingLayout& layout, bool cull, int width, int height,
               RasterizeFn rasterize, void* context, int threads, int subPixelBits,
-              RenderStats& stats, int sampleReach = 0);
+              RenderStats& stats, int sampleReach = 0) {
+        draw({&in, layout, cull, width, height, subPixelBits, sampleReach, nullptr}, rasterize,
+             context, threads, stats);
+    }
 
-  private:
-    /// What one thread's slice of a batch produced: packed records, and per tile their offsets.
-    /// A record is a CoverageSetup, the planes up to their varyings, and only the `varyings`
-    /// varyings the layout uses (a Planes holds room for all of them): 168 bytes unlit instead
-    /// of 296, so a batch's records stay in the core's cache until its tiles are rasterized.
-    /// Aligned to a cache line so that two threads never write to one.
+    /// A record's storage: whole cache lines, so a record of 64 bytes (a triangle without
+    /// varyings) is one line.
+    struct alignas(64) Line {
+        std::byte bytes[64];
+    };
+    /// A record's place in a tile's bin: the tile and the record's byte offset in its slice.
+    struct BinEntry {
+        std::uint32_t tile;
+        std::uint32_t offset;
+    };
+    /// What one thread's slice of a batch produced: packed records (tiles.cpp's RecordHead,
+    /// then the planes the layout needs), the (tile, record) pairs in submission order, and
+    /// after the batch the same sorted by tile: tile t's records are order[start[t] …
+    /// start[t + 1]). Aligned to a cache line so that two threads never write to one.
     struct alignas(64) Slice {
-        std::vector<std::byte> records;  // grown, never shrunk: a steady frame allocates nothing
-        std::size_t used = 0;            // bytes of `records` holding this batch's records
+        std::vector<Line> records;  // grown, never shrunk: a steady frame allocates nothing
+        std::size_t used = 0;       // bytes of `records` holding this batch's records
         std::size_t recordBytes = 0;
         int varyings = 0;
-        std::vector<std::vector<std::uint32_t>> bins;  // one list of record offsets per tile
-        std::vector<std::uint32_t> touched;            // tiles with a non-empty list
+        std::vector<BinEntry> entries;      // grown, never shrunk
+        std::size_t entryCount = 0;         // entries of this batch
+        std::vector<std::uint32_t> start;   // per tile, and one past the last
+        std::vector<std::uint32_t> cursor;  // per tile, the sort's scratch
+        std::vector<std::uint32_t> order;   // record offsets, tile by tile
         int tilesX = 0;
         RenderStats stats;
     };
-    static std::size_t binTriangle(void* slice, const CoverageSetup& setup, const Planes& planes);
+
+  private:
     std::size_t rasterizeTile(int tile, int tilesX, int width, int height, RasterizeFn rasterize,
                               void* context, std::size_t first, std::size_t count) const;
 

@@ -77,13 +77,24 @@ inline std::int64_t floorDivSub(std::int64_t v) {
     return v >> kSubPixelBits;
 }
 
-/// Sets up coverage of the snapped triangle (x[i], y[i]) (already in grid units) within `clip`.
-/// Returns the facing; only Front/Back triangles get a usable `out`. Back means clockwise on a
-/// y-up screen (positive area in y-down pixel space), matching the reference path. `reach`
-/// (grid units) widens the box to every pixel with a point within `reach` of its centre inside
-/// the triangle's bounds: multisampling's samples lie off the centre (0: centres only).
-inline Facing setupCoverage(const std::int64_t (&xs)[3], const std::int64_t (&ys)[3],
-                            const PixelRect& clip, CoverageSetup& out, std::int64_t reach = 0) {
+/// A snapped triangle as coverage needs it, before its edges: the vertices wound so that the
+/// inside is E ≥ 0, relative to the corner of the box's first pixel (box.x0·256, box.y0·256), so
+/// they fit 32 bits (the guard band bounds them) and a binned record can keep them instead of
+/// the 72 bytes of edges; edgesOf() derives the same edges from either.
+struct SnappedTriangle {
+    std::int64_t x[3], y[3];  ///< grid units, relative to the box's first pixel corner
+    PixelRect box;            ///< pixels whose centre (or samples, with reach) may be covered
+    std::int64_t area2;       ///< as CoverageSetup::area2
+};
+
+/// Stage one of setupCoverage(): winding, area and the pixel box of the snapped triangle (x[i],
+/// y[i]) (grid units) within `clip`. Returns the facing; only Front/Back triangles get a usable
+/// `out`. Back means clockwise on a y-up screen (positive area in y-down pixel space), matching
+/// the reference path. `reach` (grid units) widens the box to every pixel with a point within
+/// `reach` of its centre inside the triangle's bounds: multisampling's samples lie off the
+/// centre (0: centres only).
+inline Facing snapTriangle(const std::int64_t (&xs)[3], const std::int64_t (&ys)[3],
+                           const PixelRect& clip, SnappedTriangle& out, std::int64_t reach = 0) {
     std::int64_t x[3] = {xs[0], xs[1], xs[2]};
     std::int64_t y[3] = {ys[0], ys[1], ys[2]};
     std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
@@ -108,19 +119,41 @@ inline Facing setupCoverage(const std::int64_t (&xs)[3], const std::int64_t (&ys
     const std::int64_t by1 = std::min<std::int64_t>(clip.y1, floorDivSub(maxY + reach - half));
     out.box = {static_cast<int>(bx0), static_cast<int>(by0), static_cast<int>(bx1),
                static_cast<int>(by1)};
-    if (out.box.empty()) return facing;
+    for (int i = 0; i < 3; ++i) {
+        out.x[i] = x[i] - bx0 * kSubPixel;
+        out.y[i] = y[i] - by0 * kSubPixel;
+    }
+    return facing;
+}
 
-    const std::int64_t px = bx0 * kSubPixel + half;
-    const std::int64_t py = by0 * kSubPixel + half;
+/// Stage two of setupCoverage(): the edges of `t` at its box's first pixel centre, with the
+/// top-left rule's bias, and their steps per pixel (for a non-empty box).
+inline void edgesOf(const SnappedTriangle& t, CoverageSetup& out) {
+    out.box = t.box;
+    out.area2 = t.area2;
+    const std::int64_t half = kSubPixel / 2;  // the first centre, relative to the box's corner
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3;
-        const std::int64_t dx = x[j] - x[i];
-        const std::int64_t dy = y[j] - y[i];
+        const std::int64_t dx = t.x[j] - t.x[i];
+        const std::int64_t dy = t.y[j] - t.y[i];
         // Centres on a top-left edge are inside: the bias makes E = 0 fail on the others.
-        out.e0[i] = dx * (py - y[i]) - dy * (px - x[i]) - (isTopLeft(dx, dy) ? 0 : 1);
+        out.e0[i] = dx * (half - t.y[i]) - dy * (half - t.x[i]) - (isTopLeft(dx, dy) ? 0 : 1);
         out.stepX[i] = -dy * kSubPixel;
         out.stepY[i] = dx * kSubPixel;
     }
+}
+
+/// Sets up coverage of the snapped triangle (x[i], y[i]) (already in grid units) within `clip`:
+/// snapTriangle() then edgesOf(). Returns the facing; only Front/Back triangles get a usable
+/// `out`, whose box is empty when the triangle covers no pixel centre of `clip`.
+inline Facing setupCoverage(const std::int64_t (&xs)[3], const std::int64_t (&ys)[3],
+                            const PixelRect& clip, CoverageSetup& out, std::int64_t reach = 0) {
+    SnappedTriangle t;
+    const Facing facing = snapTriangle(xs, ys, clip, t, reach);
+    if (facing == Facing::Degenerate) return facing;
+    out.box = t.box;
+    out.area2 = t.area2;
+    if (!t.box.empty()) edgesOf(t, out);
     return facing;
 }
 

@@ -92,6 +92,17 @@ struct ScreenSpace {
     }
 };
 
+/// One draw as the front end sees it: the inputs that stay the same for all its triangles.
+struct DrawJob {
+    const DrawInput* in = nullptr;         ///< the vertex stage's output
+    VaryingLayout layout;                  ///< the varyings the planes carry
+    bool cull = false;                     ///< drop back faces
+    int width = 0, height = 0;             ///< image size in pixels
+    int subPixelBits = kSubPixelBits;      ///< coverage grid of 1/2^subPixelBits px
+    int sampleReach = 0;                   ///< grid units boxes reach past centres (multisampling)
+    const ScreenVertex* screen = nullptr;  ///< ScreenVertex of every clip position, or null
+};
+
 /// The per-triangle rasterizer of a variant: covers `setup` and shades with `planes`; returns
 /// the number of pixels covered (fragments before the depth test).
 using RasterizeFn = std::size_t (*)(void* context, const CoverageSetup& setup,
@@ -103,6 +114,8 @@ using RasterizeFn = std::size_t (*)(void* context, const CoverageSetup& setup,
 /// reach `sampleReach` grid units past the pixel centres (multisampling, setupCoverage()).
 /// `screen`, when given, holds ScreenSpace::vertex() of every clip position of the draw (same
 /// size, near plane and grid); else the front end derives it per corner. The result is the same.
+/// (The tile renderer calls the front end's loop, frontEnd() in front_end_loop.hpp, with its
+/// binning inlined; this entry serves the debug probes, the inspector and the tests.)
 std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool cull, int width,
                           int height, std::size_t first, std::size_t end, RasterizeFn emit,
                           void* context, RenderStats& stats, int subPixelBits = kSubPixelBits,
