@@ -9,7 +9,8 @@ BUILD_FUZZ ?= build-fuzz
 CMAKE_ARGS ?=
 OUT        ?= out
 
-.PHONY: all setup build run test test-sanitize test-clang fuzz bench-kernels charts doc format clean
+.PHONY: all setup build run test test-sanitize test-clang fuzz bench-kernels charts doc format clean \
+        lab-check lab-handout
 
 all: build
 
@@ -32,6 +33,17 @@ run: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 2; s=$$?; bash $(CURDIR)/scripts/test-summary.sh; exit $$s
 
+# The lab kit (docs/lab.md): the course's steps checked in order against facet, with the step
+# files the build uses (lab/solution by default; CMAKE_ARGS=-DFACET_LAB_SOLUTION=OFF for the
+# stubs); and a student folder with the stubs (DIR=path, COURSE=the course data folder).
+lab-check: setup $(BUILD)/build.ninja
+	cmake --build $(BUILD) --target lab_check
+	$(BUILD)/lab/lab_check
+
+COURSE ?= ../shared/data/course
+lab-handout:
+	bash scripts/lab-handout.sh "$(DIR)" "$(COURSE)"
+
 # The same tests built with AddressSanitizer and UndefinedBehaviorSanitizer (what CI also runs).
 # Built with Clang and warnings as errors, so this one build also proves what `make test-clang`
 # does (the engine, the CLI and the tests build warning-free with Clang and pass), and CI runs it
@@ -42,9 +54,10 @@ test: build
 # SANITIZE_SKIP leaves out the tests that only re-run code the other tests already cover on
 # larger inputs, for numbers (172 s of test time under ASan, about 85 s of the step at -j2): the view-angle and
 # highlight sweeps (their code is covered by the fast-vs-reference cases), the full camera-path
-# sweep (the quick sweep_paths tests run the same paths) and the bunny's SIMD comparison (every
-# target is checked on the course scenes and Spot).
-SANITIZE_SKIP ?= ^(ViewAngle\.|Highlights\.|SweepCameraPaths\.FullSweep|Scenes/SimdTargets\..*bunny)
+# sweep (the quick sweep_paths tests run the same paths), the bunny's SIMD comparison (every
+# target is checked on the course scenes and Spot) and the lab handout's test (a second, plain
+# build of facet from the clone: nothing in it is instrumented).
+SANITIZE_SKIP ?= ^(ViewAngle\.|Highlights\.|SweepCameraPaths\.FullSweep|Scenes/SimdTargets\..*bunny|LabHandout\.)
 test-sanitize: setup
 	cmake -S . -B $(BUILD_ASAN) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DCMAKE_CXX_COMPILER=clang++ \

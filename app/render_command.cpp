@@ -12,16 +12,18 @@
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
+#include "lab_render.hpp"
 #include "render_options.hpp"
 
 namespace facet::app {
 namespace {
 
-int runRender(const RenderOptions& o) {
+int runRender(const RenderOptions& o, const std::string& rendererName) {
     Scene scene;
     RenderSettings settings;
     if (const int code = prepareRender(o, "facet render", scene, settings); code != kOk)
         return code;
+    if (rendererName == "lab") return renderLab(scene, settings, o.output);
 
     Renderer renderer;
     Framebuffer frame;
@@ -81,7 +83,12 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     addRenderOptions(*cmd, *opts,
                      "Attribute interpolation: affine, perspective, subdivided[:N] (exact every N "
                      "pixels, affine between; N = 16 by default)");
-    cmd->callback([opts, &exitCode] { exitCode = runRender(*opts); });
+    auto rendererName = std::make_shared<std::string>("engine");
+    cmd->add_option("--renderer", *rendererName,
+                    "engine (facet's), or lab: the course's pipeline through the lab's steps "
+                    "(docs/lab.md)")
+        ->check(CLI::IsMember({"engine", "lab"}));
+    cmd->callback([opts, rendererName, &exitCode] { exitCode = runRender(*opts, *rendererName); });
 }
 
 }  // namespace facet::app

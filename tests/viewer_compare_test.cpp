@@ -128,7 +128,8 @@ TEST(CompareView, ComposingTwoRenderersIsComposingTwoInterpolations) {
 }
 
 TEST(RendererChoice, NamesLabelsAndTheGKeyCycle) {
-    EXPECT_EQ(rendererNames(), (std::vector<std::string_view>{"cpu", "gl", "split"}));
+    EXPECT_EQ(rendererNames(),
+              (std::vector<std::string_view>{"cpu", "gl", "split", "lab", "lab-split"}));
     for (const std::string_view name : rendererNames())
         EXPECT_EQ(toString(parseRenderer(name).value()), name);
     EXPECT_FALSE(parseRenderer("GL").has_value());
@@ -136,6 +137,11 @@ TEST(RendererChoice, NamesLabelsAndTheGKeyCycle) {
     EXPECT_EQ(rendererLabel(RendererChoice::Cpu), "CPU engine");
     EXPECT_EQ(rendererLabel(RendererChoice::OpenGl), "OpenGL twin");
     EXPECT_EQ(rendererLabel(RendererChoice::Split), "CPU | OpenGL side by side");
+    EXPECT_EQ(rendererLabel(RendererChoice::Lab), "Your pipeline");
+    EXPECT_EQ(rendererLabel(RendererChoice::LabSplit), "Compare your pipeline | facet");
+    // G cycles the engine and the OpenGL twin; from the lab's choices it goes back to the engine.
+    EXPECT_EQ(nextRenderer(RendererChoice::Lab), RendererChoice::Cpu);
+    EXPECT_EQ(nextRenderer(RendererChoice::LabSplit), RendererChoice::Cpu);
     RendererChoice c = RendererChoice::Cpu;
     for (const RendererChoice expected :
          {RendererChoice::OpenGl, RendererChoice::Split, RendererChoice::Cpu}) {
@@ -158,6 +164,14 @@ TEST(RendererChoice, WhatAFrameRunsForEachChoice) {
         const FramePlan split = planFrame(RendererChoice::Split, compareOn);
         EXPECT_TRUE(split.engine && !split.engineCompare && split.twin && split.sideBySide);
         EXPECT_TRUE(split.twoSides());
+        // Your pipeline is drawn in the twin's place: alone, or beside the engine.
+        const FramePlan lab = planFrame(RendererChoice::Lab, compareOn);
+        EXPECT_TRUE(!lab.engine && !lab.engineCompare && lab.twin && !lab.sideBySide);
+        const FramePlan labSplit = planFrame(RendererChoice::LabSplit, compareOn);
+        EXPECT_TRUE(labSplit.engine && !labSplit.engineCompare && labSplit.twin &&
+                    labSplit.sideBySide);
+        EXPECT_TRUE(isLab(RendererChoice::Lab) && isLab(RendererChoice::LabSplit));
+        EXPECT_FALSE(isLab(RendererChoice::Split) || isLab(RendererChoice::Cpu));
     }
 }
 

@@ -35,6 +35,9 @@ void sideLabels(const App& app, std::string& left, std::string& right) {
     if (app.model.rendererChoice == RendererChoice::Split) {
         left = std::string(rendererLabel(RendererChoice::Cpu));
         right = std::string(rendererLabel(RendererChoice::OpenGl));
+    } else if (app.model.rendererChoice == RendererChoice::LabSplit) {
+        left = std::string(rendererLabel(RendererChoice::Lab));
+        right = "facet (" + std::string(rendererLabel(RendererChoice::Cpu)) + ")";
     } else {
         left = interpLabel(app.compare.left);
         right = interpLabel(app.compare.right);
@@ -94,7 +97,8 @@ void colourBar(App& app) {
 
 void comparePanel(App& app) {
     CompareSettings& c = app.compare;
-    const bool sideBySide = app.model.rendererChoice == RendererChoice::Split;
+    const bool sideBySide = app.model.rendererChoice == RendererChoice::Split ||
+                            app.model.rendererChoice == RendererChoice::LabSplit;
     bool on = c.enabled;
     if (ImGui::Checkbox("compare two interpolations", &on))
         setCompare(on, app.model.rendererChoice, c);
@@ -145,7 +149,12 @@ void compareOverlay(App& app) {
         static_cast<float>(v.y + v.h) - 28.0f;  // near the bottom: panels sit at the top
     const FramePlan plan = planFrame(app.model.rendererChoice, c.enabled);
     if (!plan.twoSides()) {  // the twin alone says so, so no screenshot passes for the engine's
-        if (plan.twin) label(static_cast<float>(v.x + 8), y, "OpenGL twin");
+        if (plan.twin)
+            label(static_cast<float>(v.x + 8), y,
+                  std::string(rendererLabel(app.model.rendererChoice == RendererChoice::Lab
+                                                ? RendererChoice::Lab
+                                                : RendererChoice::OpenGl))
+                      .c_str());
         return;
     }
     std::string left, right;

@@ -214,6 +214,15 @@ void summary(App& app, const InspectorState& s) {
     std::string label =
         "final " + hexFromRgba(h.finalColor) + "   depth " + depthText(h.finalDepth);
     swatch("##final", rgbaColor(h.finalColor), label.c_str());
+    // Your pipeline's pixel (the lab's last frame) beside facet's, when it is drawn.
+    const Framebuffer& mine = app.twin.frame;
+    if (isLab(app.model.rendererChoice) && h.x >= 0 && h.y >= 0 && h.x < mine.width &&
+        h.y < mine.height) {
+        const std::size_t i = mine.index(h.x, h.y);
+        label =
+            "your pipeline " + hexFromRgba(mine.color[i]) + "   depth " + depthText(mine.depth[i]);
+        swatch("##lab", rgbaColor(mine.color[i]), label.c_str());
+    }
     if (h.hasReference) {
         label = "reference " + hexFromRgba(h.referenceRgba) + "   depth " +
                 depthText(h.referenceDepth) +

@@ -10,6 +10,7 @@
 #include "facet/limits.hpp"
 #include "facet/mesh.hpp"
 #include "gl_renderer.hpp"
+#include "lab/renderer.hpp"
 #include "panel_widgets.hpp"
 #include "panels.hpp"
 #include "scene_defaults.hpp"
@@ -56,9 +57,33 @@ void rendererPicker(App& app) {
         ImGui::EndCombo();
     }
     // Always one line (the details on hover), so the rows below stay put when the choice changes.
-    const std::string differences =
-        choice == RendererChoice::Cpu ? "" : GlRenderer::differences(app.model.settings);
-    if (choice == RendererChoice::Cpu) {
+    const std::string differences = choice == RendererChoice::Cpu ? ""
+                                    : isLab(choice) ? lab::differences(app.model.settings)
+                                                    : GlRenderer::differences(app.model.settings);
+    if (isLab(choice)) {
+        // Your pipeline: which steps are still stubs, and where it draws these settings
+        // differently (both on hover).
+        const std::vector<lab::Step>& todo = app.twin.labReport.notStarted;
+        std::string steps;
+        for (const lab::Step st : todo) steps += "\n  " + std::string(lab::stepName(st));
+        if (todo.empty() && differences.empty())
+            ImGui::TextDisabled("your pipeline: every step it ran is written");
+        else
+            ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f),
+                               "your pipeline: %zu step%s not "
+                               "started (hover)",
+                               todo.size(), todo.size() == 1 ? "" : "s");
+        if (ImGui::IsItemHovered()) {
+            ImGui::BeginTooltip();
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+            const std::string text = (todo.empty() ? std::string("Every step it ran is written.")
+                                                   : "Still the stubs:" + steps) +
+                                     (differences.empty() ? "" : "\n\n" + differences);
+            ImGui::TextUnformatted(text.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::EndTooltip();
+        }
+    } else if (choice == RendererChoice::Cpu) {
         ImGui::TextDisabled("G cycles: CPU, OpenGL twin, side by side");
     } else if (differences.empty()) {
         ImGui::TextDisabled("the OpenGL twin draws these settings as the engine");

@@ -62,7 +62,8 @@ void statsPanel(App& app) {
             // Like the engine's time, the twin's ends with the picture in memory: its draw is
             // timed on the CPU clock up to glFinish, then the readback.
             const StageTimes t = app.history.medianFrameBy(60, &StageTimes::twin);
-            row("OpenGL twin render", t.twin);
+            row(isLab(app.model.rendererChoice) ? "your pipeline render" : "OpenGL twin render",
+                t.twin);
             row("  prepare + upload", t.twinUpload);
             row("  draw (to glFinish)", t.twinDraw);
             row("  readback + post", t.twinReadback);

@@ -15,6 +15,8 @@ constexpr std::array kEntries{
     Entry{RendererChoice::Cpu, "cpu", "CPU engine"},
     Entry{RendererChoice::OpenGl, "gl", "OpenGL twin"},
     Entry{RendererChoice::Split, "split", "CPU | OpenGL side by side"},
+    Entry{RendererChoice::Lab, "lab", "Your pipeline"},
+    Entry{RendererChoice::LabSplit, "lab-split", "Compare your pipeline | facet"},
 };
 
 const Entry& entry(RendererChoice choice) {
@@ -64,17 +66,24 @@ RendererChoice nextRenderer(RendererChoice choice) {
         case RendererChoice::OpenGl:
             return RendererChoice::Split;
         case RendererChoice::Split:
+        case RendererChoice::Lab:
+        case RendererChoice::LabSplit:
             break;
     }
     return RendererChoice::Cpu;
 }
 
+bool isLab(RendererChoice choice) {
+    return choice == RendererChoice::Lab || choice == RendererChoice::LabSplit;
+}
+
 FramePlan planFrame(RendererChoice choice, bool compareEnabled) {
     FramePlan p;
-    p.engine = choice != RendererChoice::OpenGl;
+    // The lab's pipeline is drawn in the twin's place: the same frame, divider and difference.
+    p.engine = choice != RendererChoice::OpenGl && choice != RendererChoice::Lab;
     p.engineCompare = choice == RendererChoice::Cpu && compareEnabled;
     p.twin = choice != RendererChoice::Cpu;
-    p.sideBySide = choice == RendererChoice::Split;
+    p.sideBySide = choice == RendererChoice::Split || choice == RendererChoice::LabSplit;
     return p;
 }
 

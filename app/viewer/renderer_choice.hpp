@@ -16,12 +16,17 @@ namespace facet::view {
 
 /// The Render panel's renderer choice.
 enum class RendererChoice {
-    Cpu,     ///< the CPU engine alone (the interpolation Compare may be on)
-    OpenGl,  ///< the OpenGL twin alone
-    Split,   ///< CPU engine left of the divider, OpenGL twin right (or their difference)
+    Cpu,       ///< the CPU engine alone (the interpolation Compare may be on)
+    OpenGl,    ///< the OpenGL twin alone
+    Split,     ///< CPU engine left of the divider, OpenGL twin right (or their difference)
+    Lab,       ///< your pipeline alone: the lab's steps (lab/), drawn in the twin's place
+    LabSplit,  ///< your pipeline left of the divider, the CPU engine right (or the difference)
 };
 
-/// "cpu", "gl", "split": the --renderer values and the state file's spelling.
+/// True for the two choices that run the lab's pipeline instead of the OpenGL twin.
+bool isLab(RendererChoice choice);
+
+/// "cpu", "gl", "split", "lab", "lab-split": the --renderer values and the state file's spelling.
 std::vector<std::string_view> rendererNames();
 
 /// The choice a name spells; nullopt when unknown.

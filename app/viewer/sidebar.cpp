@@ -157,7 +157,9 @@ void statsOverlay(App& app) {
         const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
         const Camera& c = app.model.scene.camera;
         if (plan.engine) ImGui::Text("CPU engine %.2f ms", m.render);
-        if (plan.twin) ImGui::Text("OpenGL twin %.2f ms", m.twin);
+        if (plan.twin)
+            ImGui::Text("%s %.2f ms",
+                        isLab(app.model.rendererChoice) ? "Your pipeline" : "OpenGL twin", m.twin);
         ImGui::TextDisabled("%dx%d  (S hides)", c.width, c.height);
     }
     ImGui::End();

@@ -23,6 +23,14 @@ bool twinFailed(App& app, const Error& error) {
 
 bool renderTwin(App& app) {
     TwinView& t = app.twin;
+    if (isLab(app.model.rendererChoice)) {
+        const auto l0 = Clock::now();
+        t.labReport = t.lab.render(app.model.scene, app.model.settings, t.frame);
+        t.ms = ms(l0, Clock::now());
+        t.stats = {};
+        ++app.rendererLog.twinFrames;
+        return true;
+    }
     if (!t.renderer) {
         // First use: the shaders are read now (variants compile on their first frame), so a
         // viewer that never chooses the twin never pays for it or fails on it.
@@ -43,7 +51,12 @@ bool renderTwin(App& app) {
 const Framebuffer& composeSideBySide(App& app) {
     const CompareSettings& c = app.compare;
     CompareView& s = app.sides;
-    s.diff = composeSides(app.display, app.twin.frame, c.display, c.divider, c.heatScale, s.shown);
+    if (app.model.rendererChoice == RendererChoice::LabSplit)
+        s.diff =
+            composeSides(app.twin.frame, app.display, c.display, c.divider, c.heatScale, s.shown);
+    else
+        s.diff =
+            composeSides(app.display, app.twin.frame, c.display, c.divider, c.heatScale, s.shown);
     return s.shown;
 }
 

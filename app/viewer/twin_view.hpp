@@ -11,6 +11,7 @@
 
 #include "facet/framebuffer.hpp"
 #include "gl_renderer.hpp"
+#include "lab/renderer.hpp"
 
 namespace facet::view {
 
@@ -22,14 +23,18 @@ struct TwinView {
     Framebuffer frame;                   ///< the last picture, read back
     GlStats stats;                       ///< what the last render did, with its split
     double ms = 0.0;                     ///< the whole render() call: uploads, draw, readback
+    lab::Renderer lab;                   ///< your pipeline (the lab's steps), drawn in its place
+    lab::Report labReport;               ///< what your pipeline's last frame did
 };
 
-/// Renders the model's scene with the model's settings into app.twin.frame (the window's
-/// context must be current). On failure: the message on stderr, in the error popup and in the
-/// run's log, the CPU engine chosen again, and false.
+/// Renders the model's scene with the model's settings into app.twin.frame: with the OpenGL
+/// twin (the window's context must be current), or the lab's pipeline for the lab choices. On
+/// failure: the message on stderr, in the error popup and in the run's log, the CPU engine chosen
+/// again, and false.
 bool renderTwin(App& app);
 
-/// Side by side: the engine's picture (app.display) left, the twin's right, composed into
+/// Side by side: the engine's picture (app.display) left, the twin's right (for the lab's
+/// choice your pipeline left and the engine right), composed into
 /// app.sides.shown with the Compare view's divider or difference; the numbers go to
 /// app.sides.diff. Returns the composed picture.
 const Framebuffer& composeSideBySide(App& app);
