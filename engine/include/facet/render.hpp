@@ -57,6 +57,9 @@ struct RenderStats {
     /// clear, vertex work (transform, normals, Gouraud), rasterize + shade, and the passes after
     /// (normals display, legend).
     double clearMs = 0.0, vertexMs = 0.0, rasterMs = 0.0, postMs = 0.0;
+    /// Parts of rasterMs for `facet bench`'s per-triangle costs, in ms summed over threads:
+    /// the front end (reject, clip, snap, cull, set-up) and binning (records into tiles).
+    double frontEndMs = 0.0, binningMs = 0.0;
     std::string_view varyingNames;  ///< what they are, e.g. "depth rgb uv" (static storage)
 };
 
