@@ -49,55 +49,69 @@ Measurement measurement(const BenchCase& c, const std::string& config, const cha
                         int threads, const FrameTimes& t) {
     return {
         c.name,           config, renderer, threads, c.scene.camera.width, c.scene.camera.height,
-        triangleCount(c), t};
+        triangleCount(c), t,      {}};
 }
 
-const BenchCase* findCase(const BenchSuite& suite, const std::string& name) {
-    for (const BenchCase& c : suite.cases)
-        if (c.name == name) return &c;
-    return nullptr;
-}
-
-void measureEngine(const BenchOptions& o, const BenchSuite& suite, int threads, Progress& progress,
+void measureEngine(const BenchOptions& o, Renderer& renderer, Framebuffer& frame,
+                   const BenchCase& c, const BenchConfig& config, int threads, Progress& progress,
                    BenchResults& results) {
-    Renderer renderer;
-    Framebuffer frame;
-    for (const BenchCase& c : suite.cases)
-        for (const BenchConfig& config : suite.configs) {
-            progress.begin(c.name, config.name, kEngine, threads);
-            const FrameTimes t = timeEngine(renderer, c, config, threads, framePlan(o), frame);
-            progress.end(t);
-            results.all.push_back(measurement(c, config.name, kEngine, threads, t));
-            if (!o.images.empty()) {
-                const std::string name =
-                    c.name + "_" + config.name + "_engine_t" + std::to_string(threads) + ".png";
-                if (Status st = writePng(frame, (std::filesystem::path(o.images) / name).string()))
-                    std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
-            }
-        }
-}
-
-/// Runs the peer for one LP_NUM_THREADS; false when OpenGL failed (message printed).
-bool measureOpenGl(const BenchOptions& o, const BenchSuite& suite, int threads, Progress& progress,
-                   BenchResults& results) {
-    PeerEvents events;
-    events.info = [&](const std::string& renderer) { results.glRenderer = renderer; };
-    events.start = [&](const std::string& c, const std::string& config) {
-        progress.begin(c, config, kOpenGl, threads);
-    };
-    events.result = [&](const std::string& name, const std::string& config, const FrameTimes& t) {
-        progress.end(t);
-        if (const BenchCase* c = findCase(suite, name))
-            results.all.push_back(measurement(*c, config, kOpenGl, threads, t));
-    };
-    if (Status st = runGlPeerProcess(o, threads, events)) {
-        progress.fail();
-        std::fprintf(stderr, "facet bench: OpenGL with LP_NUM_THREADS=%d: %s\n", threads,
-                     st->what().c_str());
-        if (results.glRenderer.empty()) results.glRenderer = "unavailable: " + st->what();
-        return false;
+    progress.begin(c.name, config.name, kEngine, threads);
+    const EngineTimes t = timeEngine(renderer, c, config, threads, framePlan(o), frame);
+    progress.end(t.times);
+    Measurement m = measurement(c, config.name, kEngine, threads, t.times);
+    m.stages = t.stages;
+    results.all.push_back(m);
+    if (!o.images.empty()) {
+        const std::string name =
+            c.name + "_" + config.name + "_engine_t" + std::to_string(threads) + ".png";
+        if (Status st = writePng(frame, (std::filesystem::path(o.images) / name).string()))
+            std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
     }
-    return true;
+}
+
+/// The OpenGL peers, one per thread count, while they work; empty once one failed.
+struct Peers {
+    std::vector<GlPeerProcess> running;
+    bool failed = false;
+
+    void fail(BenchResults& results, int threads, const std::string& message) {
+        std::fprintf(stderr, "facet bench: OpenGL with LP_NUM_THREADS=%d: %s\n", threads,
+                     message.c_str());
+        if (results.glRenderer.empty()) results.glRenderer = "unavailable: " + message;
+        failed = true;
+        running.clear();  // the destructors end them
+    }
+};
+
+/// Starts a peer per thread count; on failure none runs (message printed).
+Peers startPeers(const BenchOptions& o, const std::vector<int>& threads, BenchResults& results) {
+    Peers peers;
+    for (int t : threads) {
+        Result<GlPeerProcess> p = GlPeerProcess::start(o, t);
+        if (!p) {
+            peers.fail(results, t, p.error().what());
+            break;
+        }
+        results.glRenderer = p->renderer();
+        peers.running.push_back(std::move(p).value());
+    }
+    return peers;
+}
+
+/// The peers' measurement of (case, config) at every thread count; stops them all on failure.
+void measureOpenGl(const BenchCase& c, const BenchConfig& config, const std::vector<int>& threads,
+                   Peers& peers, Progress& progress, BenchResults& results) {
+    for (std::size_t i = 0; i < threads.size() && !peers.running.empty(); ++i) {
+        progress.begin(c.name, config.name, kOpenGl, threads[i]);
+        const Result<FrameTimes> t = peers.running[i].measure(c.name, config.name);
+        if (!t) {
+            progress.fail();
+            peers.fail(results, threads[i], t.error().what());
+            return;
+        }
+        progress.end(t.value());
+        results.all.push_back(measurement(c, config.name, kOpenGl, threads[i], t.value()));
+    }
 }
 
 int runBench(const BenchOptions& o) {
@@ -132,13 +146,20 @@ int runBench(const BenchOptions& o) {
     BenchResults results;
     for (const BenchCase& c : suite.cases)
         for (Measurement& m : measureFloors(c, framePlan(o).frames)) results.all.push_back(m);
-    for (int t : threads) measureEngine(o, suite, t, progress, results);
-    bool glFailed = false;
-    for (int t : threads)
-        if (!measureOpenGl(o, suite, t, progress, results)) {
-            glFailed = true;
-            break;
+    // Interleaved: each (case, config) is measured by the engine and then by the peers before
+    // the next, so a machine whose speed drifts during the run moves both sides of a ratio.
+    Peers peers = startPeers(o, threads, results);
+    Renderer renderer;
+    Framebuffer frame;
+    for (const BenchCase& c : suite.cases)
+        for (const BenchConfig& config : suite.configs) {
+            for (int t : threads)
+                measureEngine(o, renderer, frame, c, config, t, progress, results);
+            measureOpenGl(c, config, threads, peers, progress, results);
         }
+    for (std::size_t i = 0; i < peers.running.size(); ++i)
+        if (Status st = peers.running[i].finish()) peers.fail(results, threads[i], st->what());
+    const bool glFailed = peers.failed;
 
     printBenchTable(stdout, suite, results, threads);
     const double seconds =
@@ -208,6 +229,11 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--shared", o->shared, "The shared data folder (course scenes, bunny, Spot)");
     cmd->add_option("--images", o->images, "Write the last frame of each measurement here");
     cmd->add_option("--gnuplot", o->gnuplot, "The gnuplot executable")->capture_default_str();
+    cmd->footer(std::string("Times per frame (median of the timed frames):\n  engine: ") +
+                kEngineTimeIncludes + ".\n  opengl: " + kOpenGlTimeIncludes +
+                ".\n  ns/triangle (engine): " + kStageColumnsMean +
+                ".\nEach case and config is measured by the engine, then by OpenGL, before the "
+                "next.");
     // The OpenGL side re-runs this command in a child process (bench/gl_peer.hpp).
     cmd->add_flag("--peer", o->peer)->group("");
     cmd->callback([o, &exitCode] { exitCode = runBench(*o); });

@@ -264,6 +264,7 @@ struct CsvRow {
     int threads = 0, width = 0, height = 0, frames = 0;
     long triangles = 0;
     double median = 0, min = 0, max = 0, mtri = 0, mpix = 0;
+    std::string frontEndNs, binningNs, rasterRestNs;  ///< blank where not measured
 };
 
 struct Csv {
@@ -297,13 +298,15 @@ Csv readCsv(const std::string& path) {
         std::vector<std::string> f;
         std::stringstream ss(line);
         for (std::string field; std::getline(ss, field, ',');) f.push_back(field);
-        if (f.size() != 13) {
+        if (!line.empty() && line.back() == ',') f.emplace_back();  // a blank last field
+        if (f.size() != 16) {
             ADD_FAILURE() << "bad row: " << line;
             continue;
         }
         csv.rows.push_back({f[0], f[1], f[2], std::stoi(f[3]), std::stoi(f[4]), std::stoi(f[5]),
                             std::stoi(f[7]), std::stol(f[6]), std::stod(f[8]), std::stod(f[9]),
-                            std::stod(f[10]), std::stod(f[11]), std::stod(f[12])});
+                            std::stod(f[10]), std::stod(f[11]), std::stod(f[12]), f[13], f[14],
+                            f[15]});
     }
     return csv;
 }
@@ -337,7 +340,17 @@ TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
         EXPECT_TRUE(csv.has(c)) << c;
     EXPECT_EQ(csv.header,
               "case,config,renderer,threads,width,height,triangles,frames,median_ms,min_ms,"
-              "max_ms,mtri_per_s,mpix_per_s");
+              "max_ms,mtri_per_s,mpix_per_s,frontend_ns_per_tri,binning_ns_per_tri,"
+              "raster_rest_ns_per_tri");
+    // What each side's time includes, in the CSV, the table and --help.
+    for (const char* c :
+         {"engine time: everything Renderer::render does per frame",
+          "opengl time: clear and draw up to glFinish, the mesh resident", "*_ns_per_tri: "})
+        EXPECT_TRUE(csv.has(c)) << c;
+    EXPECT_NE(r.out.find("opengl time: clear and draw up to glFinish"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("ns/triangle"), std::string::npos) << r.out;
+    const Outcome help = run("bench --help");
+    EXPECT_NE(help.out.find("the mesh resident"), std::string::npos) << help.out;
     // 2 cases x 5 configs (gouraud_msaa4 included) x 2 thread counts per renderer, and 3
     // floors per case.
     EXPECT_EQ(csv.count("engine"), 20);
@@ -354,6 +367,25 @@ TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
             EXPECT_GT(row.triangles, 0);
             EXPECT_TRUE(row.threads == 1 || row.threads == 2);
         }
+        // Stage costs are the engine's: its raster time is always there (front end and
+        // binning once the engine reports them), the other rows leave all three blank.
+        if (row.renderer == "engine") {
+            EXPECT_GT(std::stod(row.rasterRestNs), 0.0) << row.caseName << " " << row.config;
+            for (const std::string& ns : {row.frontEndNs, row.binningNs}) {
+                if (!ns.empty()) {
+                    EXPECT_GT(std::stod(ns), 0.0);
+                }
+            }
+        } else {
+            EXPECT_EQ(row.frontEndNs + row.binningNs + row.rasterRestNs, "") << row.renderer;
+        }
+    }
+    // Interleaved: a case and config's OpenGL measurements follow its engine ones at once.
+    if (!noGl) {
+        const std::size_t engine2 = r.out.find("sphere_quick painter engine t=2 ... ");
+        const std::size_t gl1 = r.out.find("sphere_quick painter opengl t=1 ... ");
+        const std::size_t nextEngine = r.out.find("sphere_quick gouraud engine t=1 ... ");
+        EXPECT_TRUE(engine2 < gl1 && gl1 < nextEngine) << r.out;
     }
     if (haveGnuplot()) {
         EXPECT_EQ(pngSize(out("b.png")), std::make_pair(1600, 1100));

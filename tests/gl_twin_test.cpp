@@ -293,6 +293,50 @@ TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+// The benchmark's frame: upload once, draw the resident mesh (twice here), read back once. The
+// picture is render()'s, the draw sends nothing, and draw() refuses what upload() did not send.
+TEST(GlTwinContext, ResidentDrawsGiveRendersPicture) {
+    REQUIRE_TWIN();
+    Twin& t = twin();
+    REQUIRE_SHARED_DATA(facet::test::sharedScenePath("course/example2"));
+    std::string error;
+    const facet::Scene* scene = facet::test::loadCached("course/example2", error);
+    ASSERT_NE(scene, nullptr) << error;
+    facet::RenderSettings phong;
+    phong.lighting = Lighting::Phong;
+    facet::Framebuffer rendered;
+    ASSERT_TRUE(t.renderer->render(*scene, phong, rendered).ok());
+
+    facet::GlStats stats;
+    ASSERT_FALSE(t.renderer->upload(*scene, phong, stats)) << "upload";
+    EXPECT_GT(stats.uploadBytes, 0u);
+    const std::size_t sent = stats.uploadBytes;
+    for (int i = 0; i < 2; ++i) ASSERT_FALSE(t.renderer->draw(*scene, phong, stats)) << i;
+    EXPECT_EQ(stats.uploadBytes, sent);  // the draws sent nothing
+    EXPECT_EQ(stats.trianglesIn, scene->mesh->triangleCount());
+    facet::Framebuffer resident;
+    ASSERT_FALSE(t.renderer->readBack(*scene, phong, resident, stats));
+    EXPECT_TRUE(resident.color == rendered.color && resident.depth == rendered.depth);
+
+    // Gouraud is another variant (it reads the colour, not the position): not uploaded.
+    facet::RenderSettings gouraud = phong;
+    gouraud.lighting = Lighting::Gouraud;
+    const facet::Status other = t.renderer->draw(*scene, gouraud, stats);
+    ASSERT_TRUE(other.has_value());
+    EXPECT_NE(other->what().find("upload"), std::string::npos) << other->what();
+    // Another mesh than the one uploaded.
+    facet::Scene copy = *scene;
+    copy.mesh = std::make_shared<const facet::Mesh>(*scene->mesh);
+    EXPECT_TRUE(t.renderer->draw(copy, phong, stats).has_value());
+    // A fresh upload has nothing drawn to read back; a draw beyond the driver's size fails.
+    facet::Scene wide = *scene;
+    wide.camera.width = 1 << 20;
+    ASSERT_FALSE(t.renderer->upload(*scene, phong, stats));
+    EXPECT_TRUE(t.renderer->readBack(*scene, phong, resident, stats).has_value());
+    EXPECT_TRUE(t.renderer->draw(wide, phong, stats).has_value());
+    EXPECT_TRUE(t.renderer->readBack(*scene, phong, resident, stats).has_value());
+}
+
 // A second context with its own renderer draws the same picture; the first works on after.
 TEST(GlTwinContext, ASecondContextDrawsTheSamePicture) {
     REQUIRE_TWIN();

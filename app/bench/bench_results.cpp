@@ -15,6 +15,15 @@ double megaPixelsPerSecond(const Measurement& m) {
     return static_cast<double>(m.width) * m.height / (m.times.median * 1e3);
 }
 
+double nsPerTriangle(const Measurement& m, double ms) {
+    return m.triangles > 0 ? ms * 1e6 / static_cast<double>(m.triangles) : 0.0;
+}
+
+double rasterRestNsPerTriangle(const Measurement& m) {
+    const StageTimes& s = m.stages;
+    return s.rasterMs > 0.0 ? nsPerTriangle(m, s.rasterMs - s.frontEndMs - s.binningMs) : 0.0;
+}
+
 const Measurement* BenchResults::find(const std::string& caseName, const std::string& config,
                                       const std::string& renderer, int threads) const {
     for (const Measurement& m : all)

@@ -48,6 +48,26 @@ void printTime(std::FILE* out, const Measurement* m) {
                  megaPixelsPerSecond(*m));
 }
 
+/// A per-triangle cost in ns, or "-" when the engine did not measure it.
+std::string nsCell(double ns) {
+    return ns == 0.0 ? std::string("-") : format("%.1f", ns);
+}
+
+/// The engine's stage costs per triangle at each thread count (kStageColumnsMean).
+void printStages(std::FILE* out, const BenchCase& c, const BenchConfig& config,
+                 const BenchResults& r, const std::vector<int>& threads) {
+    std::fprintf(out, "   %-9s %-13s", "", "ns/triangle");
+    for (int t : threads) {
+        const Measurement* m = r.find(c.name, config.name, kEngine, t);
+        const std::string cell = m ? "front " + nsCell(nsPerTriangle(*m, m->stages.frontEndMs)) +
+                                         ", bin " + nsCell(nsPerTriangle(*m, m->stages.binningMs)) +
+                                         ", raster rest " + nsCell(rasterRestNsPerTriangle(*m))
+                                   : std::string("-");
+        std::fprintf(out, " | %-*s", kGroupWidth, cell.c_str());
+    }
+    std::fprintf(out, "%s |\n", threads.size() > 1 ? " |           " : "");
+}
+
 /// Tallies of the targets over the table.
 struct Tally {
     int ratioMet = 0, ratioTotal = 0, scaleMet = 0, scaleTotal = 0;
@@ -92,6 +112,7 @@ void printConfig(std::FILE* out, const BenchCase& c, const BenchConfig& config,
         tally.ratioMet += judged && ratio <= kRatioTarget;
     }
     std::fprintf(out, "%s |\n", threads.size() > 1 ? " |           " : "");
+    printStages(out, c, config, r, threads);
 }
 
 }  // namespace
@@ -99,6 +120,10 @@ void printConfig(std::FILE* out, const BenchCase& c, const BenchConfig& config,
 void printBenchTable(std::FILE* out, const BenchSuite& suite, const BenchResults& r,
                      const std::vector<int>& threads) {
     Tally tally;
+    std::fprintf(out,
+                 "engine time: %s.\nopengl time: %s.\nns/triangle: %s.\nEngine and opengl are "
+                 "measured one after the other for each case and config.\n",
+                 kEngineTimeIncludes, kOpenGlTimeIncludes, kStageColumnsMean);
     for (const BenchCase& c : suite.cases) {
         printCaseHeader(out, c, r, threads);
         for (const BenchConfig& config : suite.configs)

@@ -39,14 +39,26 @@ FrameTimes timeFrames(const FramePlan& plan, const std::function<bool()>& frame)
     return summarize(std::move(ms));
 }
 
-FrameTimes timeEngine(Renderer& renderer, const BenchCase& c, const BenchConfig& config,
-                      int threads, const FramePlan& plan, Framebuffer& target) {
+EngineTimes timeEngine(Renderer& renderer, const BenchCase& c, const BenchConfig& config,
+                       int threads, const FramePlan& plan, Framebuffer& target) {
     RenderSettings settings = config.settings;
     settings.threads = threads;
-    return timeFrames(plan, [&] {
-        renderer.render(c.scene, settings, target);
+    std::vector<double> frontEnd, binning, raster;
+    EngineTimes t;
+    t.times = timeFrames(plan, [&] {
+        const RenderStats stats = renderer.render(c.scene, settings, target);
+        frontEnd.push_back(stats.frontEndMs);
+        binning.push_back(stats.binningMs);
+        raster.push_back(stats.rasterMs);
         return true;
     });
+    // The warm-up frames came first: the timed ones are the last `frames`.
+    const auto timed = [&](const std::vector<double>& v) {
+        const auto n = std::min(v.size(), static_cast<std::size_t>(t.times.frames));
+        return medianOf(std::vector<double>(v.end() - static_cast<std::ptrdiff_t>(n), v.end()));
+    };
+    t.stages = {timed(frontEnd), timed(binning), timed(raster)};
+    return t;
 }
 
 std::vector<Measurement> measureFloors(const BenchCase& c, int frames) {

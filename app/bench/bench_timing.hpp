@@ -17,9 +17,16 @@ namespace facet::app {
 /// reports itself); the frames timed so far are summarised.
 FrameTimes timeFrames(const FramePlan& plan, const std::function<bool()>& frame);
 
-/// The engine drawing a case in a config with `threads` worker threads into `target`.
-FrameTimes timeEngine(Renderer& renderer, const BenchCase& c, const BenchConfig& config,
-                      int threads, const FramePlan& plan, Framebuffer& target);
+/// The engine's frame times and the medians of its stage times over the timed frames.
+struct EngineTimes {
+    FrameTimes times;
+    StageTimes stages;
+};
+
+/// The engine drawing a case in a config with `threads` worker threads into `target`: each
+/// timed frame is the whole of Renderer::render (clear, vertices, raster, resolve, post).
+EngineTimes timeEngine(Renderer& renderer, const BenchCase& c, const BenchConfig& config,
+                       int threads, const FramePlan& plan, Framebuffer& target);
 
 /// The memory floor at a case's size, on one thread: filling the colour plane (what a clear
 /// costs), filling colour and depth, and copying the colour plane (what a frame readback or

@@ -1,10 +1,12 @@
-// The peer process: `facet bench --peer`, run by gl_peer_process.cpp with LP_NUM_THREADS set.
-// Everything it says goes to stdout as "facet-peer <event> ..." lines (gl_peer.hpp); a line
+// The peer process: `facet bench --peer`, started by gl_peer_process.cpp with LP_NUM_THREADS
+// set. Everything it says goes to stdout as "facet-peer <event> ..." lines (gl_peer.hpp); a line
 // without the prefix (a driver's chatter) is ignored by the parent.
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 #include <string>
 
 #include "../commands.hpp"
@@ -18,7 +20,7 @@
 namespace facet::app {
 namespace {
 
-/// One protocol line, flushed at once so the parent's progress follows the work.
+/// One protocol line, flushed at once so the parent reads it while the peer waits.
 void say(const std::string& line) {
     std::printf("facet-peer %s\n", line.c_str());
     std::fflush(stdout);
@@ -44,25 +46,41 @@ int runGlPeer(const BenchOptions& o) {
     const std::string tag = std::string("opengl_t") + (lp ? lp : "default");
     const FramePlan plan = framePlan(o);
     Framebuffer frame;
-    for (const BenchCase& c : suite->cases)
-        for (const BenchConfig& config : suite->configs) {
-            say("start " + c.name + " " + config.name);
-            std::string error;
-            const FrameTimes t = timeFrames(plan, [&] {
-                const Result<GlStats> stats = renderer->render(c.scene, config.settings, frame);
-                if (!stats) error = stats.error().what();
-                return stats.ok();
-            });
-            if (!error.empty()) return fail(c.name + " " + config.name + ": " + error);
-            say("result " + c.name + " " + config.name + " " + std::to_string(t.frames) + " " +
-                std::to_string(t.median) + " " + std::to_string(t.min) + " " +
-                std::to_string(t.max));
-            if (!o.images.empty()) {
-                const auto path = std::filesystem::path(o.images) /
-                                  (c.name + "_" + config.name + "_" + tag + ".png");
-                if (Status st = writePng(frame, path.string())) return fail(st->what());
-            }
+    for (std::string line; std::getline(std::cin, line);) {
+        std::istringstream in(line);
+        std::string command, caseName, configName;
+        in >> command >> caseName >> configName;
+        const BenchCase* c = nullptr;
+        const BenchConfig* config = nullptr;
+        for (const BenchCase& x : suite->cases)
+            if (x.name == caseName) c = &x;
+        for (const BenchConfig& x : suite->configs)
+            if (x.name == configName) config = &x;
+        if (command != "run" || !c || !config) return fail("cannot run '" + line + "'");
+
+        const std::string what = c->name + " " + config->name;
+        GlStats stats;
+        if (Status st = renderer->upload(c->scene, config->settings, stats))
+            return fail(what + ": " + st->what());
+        std::string error;
+        const FrameTimes t = timeFrames(plan, [&] {
+            const Status st = renderer->draw(c->scene, config->settings, stats);
+            if (st) error = st->what();
+            return !st;
+        });
+        if (!error.empty()) return fail(what + ": " + error);
+        // The picture for --images: one readback, untimed.
+        if (!o.images.empty()) {
+            if (Status st = renderer->readBack(c->scene, config->settings, frame, stats))
+                return fail(what + ": " + st->what());
+            const auto path = std::filesystem::path(o.images) /
+                              (c->name + "_" + config->name + "_" + tag + ".png");
+            if (Status st = writePng(frame, path.string())) return fail(st->what());
         }
+        // Last: the parent goes on to its next measurement as soon as it reads this line.
+        say("result " + what + " " + std::to_string(t.frames) + " " + std::to_string(t.median) +
+            " " + std::to_string(t.min) + " " + std::to_string(t.max));
+    }
     return kOk;
 }
 

@@ -1,8 +1,9 @@
-// The parent's side of the OpenGL peer: start `facet bench --peer` with LP_NUM_THREADS set, read
-// its lines as they come, and turn them into events.
+// The parent's side of the OpenGL peer: start `facet bench --peer` with LP_NUM_THREADS set and a
+// socket as its stdin and stdout, then ask for measurements one line at a time.
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -54,41 +55,66 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
     return p;
 }
 
-/// Handles one line; returns the peer's error message when the line is one.
-std::string dispatch(const std::string& line, const PeerEvents& events) {
-    if (line.rfind(kPrefix, 0) != 0) return "";
-    std::istringstream in(line.substr(kPrefix.size()));
-    std::string event, caseName, config;
-    in >> event;
-    if (event == "info") {
-        std::string rest;
-        std::getline(in >> std::ws, rest);
-        events.info(rest);
-    } else if (event == "start") {
-        in >> caseName >> config;
-        events.start(caseName, config);
-    } else if (event == "result") {
-        FrameTimes t;
-        in >> caseName >> config >> t.frames >> t.median >> t.min >> t.max;
-        events.result(caseName, config, t);
-    } else if (event == "error") {
-        std::string rest;
-        std::getline(in >> std::ws, rest);
-        return rest.empty() ? "unspecified error" : rest;
-    }
-    return "";
+Error peerError(const std::string& message) {
+    return Error{{"OpenGL peer", 0}, message};
 }
 
 }  // namespace
 
-Status runGlPeerProcess(const BenchOptions& o, int lpThreads, const PeerEvents& events) {
-    const Error spawnFailed{{"OpenGL peer", 0}, ""};
+struct GlPeerProcess::State {
+    pid_t pid = 0;
+    int socket = -1;     ///< ours of the pair: commands out, the peer's lines in
+    FILE* in = nullptr;  ///< reads `socket` (a duplicate) line by line
+    std::string renderer;
+    bool finished = false;
+
+    /// The next protocol line; the event and the rest, or an Error when the peer ended.
+    Result<std::pair<std::string, std::string>> next() {
+        char* buf = nullptr;
+        std::size_t cap = 0;
+        for (ssize_t n; (n = getline(&buf, &cap, in)) > 0;) {
+            std::string line(buf, static_cast<std::size_t>(n));
+            while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+            if (line.rfind(kPrefix, 0) != 0) continue;  // the driver's chatter
+            std::free(buf);
+            std::istringstream s(line.substr(kPrefix.size()));
+            std::string event, rest;
+            s >> event;
+            std::getline(s >> std::ws, rest);
+            if (event == "error") return peerError(rest.empty() ? "unspecified error" : rest);
+            return std::make_pair(event, rest);
+        }
+        std::free(buf);
+        if (Status st = finish()) return *st;
+        return peerError("ended without answering");
+    }
+
+    Status finish() {
+        if (finished) return std::nullopt;
+        finished = true;
+        // Ending its input ends the peer's loop.
+        shutdown(socket, SHUT_WR);
+        if (in) std::fclose(in);
+        close(socket);
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return std::nullopt;
+        return peerError(WIFSIGNALED(status)
+                             ? "killed by signal " + std::to_string(WTERMSIG(status))
+                             : "exited with status " + std::to_string(WEXITSTATUS(status)));
+    }
+};
+
+Result<GlPeerProcess> GlPeerProcess::start(const BenchOptions& o, int lpThreads) {
     int fds[2];
-    if (pipe2(fds, O_CLOEXEC) != 0)
-        return Error{spawnFailed.loc, std::string("pipe: ") + std::strerror(errno)};
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
+        return peerError(std::string("socketpair: ") + std::strerror(errno));
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    // dup2 clears close-on-exec on the copy: the peer's stdout is the pipe, nothing else leaks.
+    // dup2 clears close-on-exec on the copies: the peer's stdin and stdout are its end of the
+    // pair, nothing else leaks.
+    posix_spawn_file_actions_adddup2(&actions, fds[1], STDIN_FILENO);
     posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
     std::vector<std::string> args = peerArgs(o), env = peerEnvironment(lpThreads);
     std::vector<char*> argv = pointers(args), envp = pointers(env);
@@ -99,32 +125,62 @@ Status runGlPeerProcess(const BenchOptions& o, int lpThreads, const PeerEvents& 
     close(fds[1]);
     if (rc != 0) {
         close(fds[0]);
-        return Error{spawnFailed.loc, std::string("cannot start: ") + std::strerror(rc)};
+        return peerError(std::string("cannot start: ") + std::strerror(rc));
     }
-    std::string error;
-    FILE* in = fdopen(fds[0], "r");
-    char* buf = nullptr;
-    std::size_t cap = 0;
-    for (ssize_t n; in && (n = getline(&buf, &cap, in)) > 0;) {
-        std::string line(buf, static_cast<std::size_t>(n));
-        while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
-        if (std::string e = dispatch(line, events); !e.empty()) error = e;
+    auto state = std::make_unique<State>();
+    state->pid = pid;
+    state->socket = fds[0];
+    const int readFd = fcntl(fds[0], F_DUPFD_CLOEXEC, 0);
+    state->in = readFd >= 0 ? fdopen(readFd, "r") : nullptr;
+    GlPeerProcess peer(std::move(state));
+    if (!peer.state_->in) {
+        if (readFd >= 0) close(readFd);
+        (void)peer.finish();
+        return peerError("cannot read the peer's output");
     }
-    std::free(buf);
-    if (in)
-        std::fclose(in);
-    else
-        close(fds[0]);
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    Result<std::pair<std::string, std::string>> info = peer.state_->next();
+    if (!info) return info.error();
+    if (info->first != "info") return peerError("said '" + info->first + "' before 'info'");
+    peer.state_->renderer = info->second;
+    return peer;
+}
+
+GlPeerProcess::GlPeerProcess(std::unique_ptr<State> state) : state_(std::move(state)) {}
+GlPeerProcess::GlPeerProcess(GlPeerProcess&& other) noexcept = default;
+GlPeerProcess& GlPeerProcess::operator=(GlPeerProcess&& other) noexcept = default;
+
+GlPeerProcess::~GlPeerProcess() {
+    if (state_) (void)state_->finish();
+}
+
+const std::string& GlPeerProcess::renderer() const {
+    return state_->renderer;
+}
+
+Result<FrameTimes> GlPeerProcess::measure(const std::string& caseName, const std::string& config) {
+    if (state_->finished) return peerError("has ended");
+    const std::string command = "run " + caseName + " " + config + "\n";
+    // MSG_NOSIGNAL: a peer that died is an error value here, not a SIGPIPE for the bench.
+    if (send(state_->socket, command.data(), command.size(), MSG_NOSIGNAL) !=
+        static_cast<ssize_t>(command.size())) {
+        const std::string why = std::strerror(errno);
+        if (Status st = state_->finish()) return *st;
+        return peerError("cannot send: " + why);
     }
-    if (!error.empty()) return Error{spawnFailed.loc, error};
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return Error{spawnFailed.loc,
-                     WIFSIGNALED(status)
-                         ? "killed by signal " + std::to_string(WTERMSIG(status))
-                         : "exited with status " + std::to_string(WEXITSTATUS(status))};
-    return std::nullopt;
+    Result<std::pair<std::string, std::string>> line = state_->next();
+    if (!line) return line.error();
+    std::istringstream in(line->second);
+    std::string name, conf;
+    FrameTimes t;
+    in >> name >> conf >> t.frames >> t.median >> t.min >> t.max;
+    if (line->first != "result" || !in || name != caseName || conf != config)
+        return peerError("answered '" + line->first + " " + line->second + "' to '" +
+                         command.substr(0, command.size() - 1) + "'");
+    return t;
+}
+
+Status GlPeerProcess::finish() {
+    return state_->finish();
 }
 
 }  // namespace facet::app

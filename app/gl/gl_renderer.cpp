@@ -45,9 +45,16 @@ struct RendererState {
     VertexStreams normals;  ///< the normals display's segments
     TextureCache texture;
     WireframeIndices wireframe;
-    std::vector<glm::vec3> segments;  ///< normals display: two world points per vertex
-    std::vector<float> rangeDepth;    ///< Depth shader with normals: depth before the normals
-    std::string device;               ///< GL_RENDERER
+    std::vector<glm::vec3> vertexNormals;  ///< the uploaded mesh's, when lit or displayed
+    std::vector<glm::vec3> segments;       ///< normals display: two world points per vertex
+    std::vector<float> rangeDepth;         ///< Depth shader with normals: depth before the normals
+    std::string device;                    ///< GL_RENDERER
+    // What the last upload() sent, so draw() can refuse a scene it did not send; holding the
+    // sources keeps their addresses from being reused by others while they are resident.
+    std::shared_ptr<const Mesh> residentMesh;
+    std::shared_ptr<const Texture> residentTexture;
+    std::string residentKey;
+    int drawnWidth = 0, drawnHeight = 0;  ///< the last draw()'s frame; 0: nothing to read
 };
 
 namespace {
@@ -139,20 +146,33 @@ std::size_t uploadMesh(RendererState& s, const Mesh& mesh, const Variant& v,
     return bytes;
 }
 
-/// The normals display (spec §8): a red segment from each vertex with a normal, drawn
-/// after the main pass; under the depth test except with Simple, as in the engine.
-Status drawNormals(RendererState& s, const Scene& scene, const RenderSettings& settings,
-                   const std::vector<glm::vec3>& normals, const FrameUniforms& u, GlStats& stats) {
+/// What upload() sends for these settings beyond the mesh and texture: the variant, the
+/// texture filter (which levels go up) and the normals display's segments.
+std::string residentKey(const std::string& defines, const RenderSettings& settings) {
+    return defines + "|filter " + std::to_string(static_cast<int>(settings.filter)) + "|normals " +
+           (settings.showNormals ? std::to_string(settings.normalLength) : std::string("off"));
+}
+
+/// The normals display (spec §8): a red segment from each vertex with a normal; their
+/// positions, sent with the mesh. Returns the bytes sent.
+std::size_t uploadNormals(RendererState& s, const Scene& scene, const RenderSettings& settings,
+                          GlStats& stats) {
     const Mesh& mesh = *scene.mesh;
     const float length = settings.normalLength > 0.0 ? static_cast<float>(settings.normalLength)
                                                      : normalDisplayLength(mesh);
-    normalSegments(mesh, normals, length, s.segments);
+    normalSegments(mesh, s.vertexNormals, length, s.segments);
     stats.normalsDrawn = s.segments.size() / 2;
+    if (s.segments.empty()) return 0;
+    return s.normals.upload(Attribute::Position, floats(s.segments), 3);
+}
+
+/// Draws the normals display after the main pass; under the depth test except with Simple, as
+/// in the engine.
+Status drawNormals(RendererState& s, const RenderSettings& settings, const FrameUniforms& u) {
     if (s.segments.empty()) return std::nullopt;
     const Variant lines{.mode = DrawMode::Wireframe};
     const Result<GLuint> program = programFor(s, definesFor(lines, s.clipControl));
     if (!program) return program.error();
-    stats.uploadBytes += s.normals.upload(Attribute::Position, floats(s.segments), 3);
     setDepthTest(settings.shader != ShaderKind::Simple);
     glDisable(GL_CULL_FACE);
     useProgram(program.value(), u, glm::vec3(1.0f, 0.0f, 0.0f));
@@ -219,20 +239,58 @@ GlRenderer::~GlRenderer() = default;
 
 Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& settings,
                                    Framebuffer& frame) {
+    GlStats stats;
+    if (Status st = upload(scene, settings, stats)) return *st;
+    if (Status st = draw(scene, settings, stats)) return *st;
+    if (Status st = readBack(scene, settings, frame, stats)) return *st;
+    return stats;
+}
+
+Status GlRenderer::upload(const Scene& scene, const RenderSettings& settings, GlStats& stats) {
     using namespace gl;
     RendererState& s = *state_;
-    GlStats stats;
+    const auto t0 = Clock::now();
+    const Mesh& mesh = *scene.mesh;
+    const Variant v = variantFor(settings, mesh);
+    const StateGuard guard(s.clipControl);
+    // Forget the last upload first: a failure below leaves nothing draw() would take for it.
+    s.residentMesh.reset();
+    s.residentKey.clear();
+    s.drawnWidth = s.drawnHeight = 0;
+    const std::string defines = definesFor(v, s.clipControl);
+    // The first frame of a variant builds its program; an application does so once, too.
+    const Result<GLuint> program = programFor(s, defines);
+    if (!program) return program.error();
+    s.vertexNormals.clear();
+    if (v.gouraud || v.phong || settings.showNormals) s.vertexNormals = computeVertexNormals(mesh);
+    stats.uploadBytes += uploadMesh(s, mesh, v, s.vertexNormals);
+    s.segments.clear();
+    if (settings.showNormals) stats.uploadBytes += uploadNormals(s, scene, settings, stats);
+    if (v.texture) stats.uploadBytes += s.texture.bind(scene.texture, settings.filter);
+    s.residentMesh = scene.mesh;
+    s.residentTexture = v.texture ? scene.texture : nullptr;
+    s.residentKey = residentKey(defines, settings);
+    stats.uploadMs += msBetween(t0, Clock::now());
+    return std::nullopt;
+}
+
+Status GlRenderer::draw(const Scene& scene, const RenderSettings& settings, GlStats& stats) {
+    using namespace gl;
+    RendererState& s = *state_;
     const auto t0 = Clock::now();
     const Camera& cam = scene.camera;
     const Mesh& mesh = *scene.mesh;
+    const Variant v = variantFor(settings, mesh);
+    const std::string defines = definesFor(v, s.clipControl);
+    if (s.residentMesh != scene.mesh || (v.texture && s.residentTexture != scene.texture) ||
+        s.residentKey != residentKey(defines, settings))
+        return Error{{"OpenGL twin", 0},
+                     "draw() of a mesh, texture or variant the last upload() did not send"};
     const StateGuard guard(s.clipControl);
     // Multisampling as the engine does it: triangles only (Solid mode).
     const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
     if (Status st = s.target.resize(cam.width, cam.height, samples)) return *st;
-    frame.resize(cam.width, cam.height);
-
-    const Variant v = variantFor(settings, mesh);
-    const Result<GLuint> program = programFor(s, definesFor(v, s.clipControl));
+    const Result<GLuint> program = programFor(s, defines);
     if (!program) return program.error();
     const float nearPlane = static_cast<float>(resolveNearPlane(settings, mesh));
     // The matrix is built in double and used in float, as the engine does.
@@ -242,12 +300,6 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
                           settings.pointSize,
                           prepareLighting(scene.lighting),
                           glm::vec3(cam.eye)};
-
-    std::vector<glm::vec3> normals;
-    if (v.gouraud || v.phong || settings.showNormals) normals = computeVertexNormals(mesh);
-    stats.uploadBytes += uploadMesh(s, mesh, v, normals);
-    if (v.texture) stats.uploadBytes += s.texture.bind(scene.texture, settings.filter);
-    const auto t1 = Clock::now();
 
     s.target.bind();
     if (s.clipControl) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -265,6 +317,7 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
         glFrontFace(GL_CW);
         glCullFace(GL_BACK);
     }
+    if (v.texture) s.texture.bind(scene.texture, settings.filter);  // resident: binds only
     useProgram(program.value(), u, glm::vec3(1.0f));
     s.mesh.bind();
     switch (settings.mode) {
@@ -291,18 +344,33 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
             s.target.readDepth(s.rangeDepth, nearPlane);
             s.target.bind();
         }
-        if (Status st = drawNormals(s, scene, settings, normals, u, stats)) return *st;
+        stats.normalsDrawn = s.segments.size() / 2;
+        if (Status st = drawNormals(s, settings, u)) return *st;
     }
     // The draw's time is the CPU clock up to glFinish: on llvmpipe that is exactly the work
     // (its GL_TIME_ELAPSED queries came back as noise: 0.5–3.8 ms for a 12 ms draw, and
     // 9.8e6 ms on the first frame); on a GPU it adds the submission, an honest upper bound.
     s.target.resolve();  // part of the draw's time, as the engine's resolve is
     glFinish();
-    const auto t2 = Clock::now();
+    s.drawnWidth = cam.width;
+    s.drawnHeight = cam.height;
+    stats.drawMs += msBetween(t0, Clock::now());
+    return std::nullopt;
+}
 
+Status GlRenderer::readBack(const Scene& scene, const RenderSettings& settings, Framebuffer& frame,
+                            GlStats& stats) {
+    using namespace gl;
+    RendererState& s = *state_;
+    const auto t0 = Clock::now();
+    if (s.drawnWidth != scene.camera.width || s.drawnHeight != scene.camera.height)
+        return Error{{"OpenGL twin", 0}, "readBack() without a draw() of this size"};
+    const StateGuard guard(s.clipControl);
+    frame.resize(scene.camera.width, scene.camera.height);
+    const float nearPlane = static_cast<float>(resolveNearPlane(settings, *scene.mesh));
     s.target.readColor(frame);
     s.target.readDepth(frame.depth, nearPlane);
-    if (v.depthShader) {
+    if (variantFor(settings, *scene.mesh).depthShader) {
         const DepthRange range =
             colorDepth(frame, settings.showNormals ? s.rangeDepth : frame.depth);
         stats.depthNear = range.nearest;
@@ -310,11 +378,8 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
         if (settings.depthLegend && range.farthest > 0.0f)
             drawDepthLegend(frame, range.nearest, range.farthest);
     }
-    const auto t3 = Clock::now();
-    stats.uploadMs = msBetween(t0, t1);
-    stats.drawMs = msBetween(t1, t2);
-    stats.readbackMs = msBetween(t2, t3);
-    return stats;
+    stats.readbackMs += msBetween(t0, Clock::now());
+    return std::nullopt;
 }
 
 }  // namespace facet

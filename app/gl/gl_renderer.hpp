@@ -27,9 +27,9 @@ struct GlStats {
     std::size_t normalsDrawn = 0;  ///< normal segments submitted (showNormals)
     float depthNear = 0.0f;        ///< Depth shader: smallest depth in the frame
     float depthFar = 0.0f;         ///< Depth shader: largest depth in the frame
-    std::size_t uploadBytes = 0;   ///< vertex, index and texture bytes sent this frame
+    std::size_t uploadBytes = 0;   ///< vertex, index and texture bytes sent (upload())
     double uploadMs = 0.0;         ///< CPU preparation and uploads (normals, edges, buffers)
-    double drawMs = 0.0;           ///< draw calls until glFinish returned (CPU clock)
+    double drawMs = 0.0;           ///< clear and draw calls until glFinish returned (CPU clock)
     double readbackMs = 0.0;       ///< colour and depth readback, depth colours, legend
 };
 
@@ -52,8 +52,23 @@ class GlRenderer {
 
     /// Draws the scene at its camera's size into `frame` (resized), like Renderer::render:
     /// colour with row 0 at the top, depth as camera-space Z with +inf where nothing drew.
+    /// upload(), draw() and readBack() in one call, so every frame sends the mesh again.
     /// Errors: a shader variant that does not build, a size beyond the driver's limit.
     Result<GlStats> render(const Scene& scene, const RenderSettings& settings, Framebuffer& frame);
+
+    /// The three steps of render() for an application that keeps a static mesh resident (the
+    /// benchmark): upload() once, then draw() per frame, then readBack() when the picture is
+    /// wanted. Each adds its counts and its time to `stats`.
+    /// upload(): computes the vertex normals the settings need and sends the streams the
+    /// variant reads, the indices and the texture, and keeps them for draw().
+    Status upload(const Scene& scene, const RenderSettings& settings, GlStats& stats);
+    /// Clears and draws what the last upload() sent, up to glFinish; an Error when that upload
+    /// was of another mesh, texture or variant than `scene` and `settings` need.
+    Status draw(const Scene& scene, const RenderSettings& settings, GlStats& stats);
+    /// Reads the last draw()'s colour and depth into `frame` (resized) and, for the Depth
+    /// shader, colours it and draws the legend as render() does.
+    Status readBack(const Scene& scene, const RenderSettings& settings, Framebuffer& frame,
+                    GlStats& stats);
 
     /// Where the twin's picture departs from the engine's for these settings beyond colour
     /// rounding, one line each, for the viewer to say so; empty when it does not.
