@@ -183,7 +183,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Where the course is simpler: its inside test (all barycentric coordinates >= 0) has no fill
 // rule, so a pixel centre exactly on an edge two triangles share is drawn by both; facet's
-// top-left rule gives it to exactly one (conventions §5).
+// top-left rule gives it to exactly one (spec §5).
 TEST(LabRasterizer, CoursesInsideTestDrawsASharedEdgeTwiceWhereFacetDrawsItOnce) {
     // The square from (0.5, 0.5) to (8.5, 8.5) split along its diagonal, which runs through the
     // pixel centres (i + ½, i + ½).

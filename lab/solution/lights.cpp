@@ -1,5 +1,5 @@
 // Solution of steps 8 and 9 (assignment section 6): each light's share of
-// I = Ia·Ka + Id · (Kd · max(0, n·l) + Ks · max(0, n·h)^s)   (conventions §6).
+// I = Ia·Ka + Id · (Kd · max(0, n·l) + Ks · max(0, n·h)^s)   (spec §6).
 
 #include <algorithm>
 #include <cmath>

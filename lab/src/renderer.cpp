@@ -24,7 +24,7 @@ glm::dvec3 colorOfHex(std::uint32_t rgb) {
     return glm::dvec3((rgb >> 16) & 0xFF, (rgb >> 8) & 0xFF, rgb & 0xFF) / 255.0;
 }
 
-// 8 bits per channel, rounded to nearest (conventions §5).
+// 8 bits per channel, rounded to nearest (spec §5).
 std::uint32_t toRgba8(const glm::dvec3& c) {
     const auto channel = [](double v) {
         if (std::isnan(v)) return 0u;

@@ -6,7 +6,7 @@
 // FACET_LAB_STEPS_DIR for a handout). Everything else here is given: the types, the barycentric
 // matrix C, the simple and painter shaders, and the renderer and checks (lab/src/).
 //
-// The course's meanings, which the checks hold every step to (conventions §4 to §7):
+// The course's meanings, which the checks hold every step to (spec §4 to §7):
 //  - The camera looks down its +Z axis; y grows downwards in the image (with the course's
 //    up = (0, -1, 0), world +Y is up on screen).
 //  - The focal length f is in pixels; the image plane is at Z = f.
