@@ -268,7 +268,7 @@ TEST_F(ViewerGui, ALargeModelShowsItsProgressAndCancelKeepsTheSceneShown) {
     // Stopped (SIGTERM) while it reads.
     Outcome r =
         driveSteps("pause 0.3", "--size " + kWindow1280 + " --window-shot window.png " + big,
-                   /*term=*/true, soon);
+                   /*selfQuit=*/false, soon);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     auto state = readState(path("state.txt"));
     EXPECT_EQ(fs::path(state.at("scene")).filename(), "default.scene");
@@ -293,7 +293,7 @@ TEST_F(ViewerGui, ALargeModelShowsItsProgressAndCancelKeepsTheSceneShown) {
     // Cancel clicked: no load in flight, the default scene still shown, no error.
     r = driveSteps("at " + std::to_string(cancel.x + cancel.w / 2) + " " +
                        std::to_string(cancel.y + cancel.h / 2) + "; click 1; pause 0.5",
-                   "--size " + kWindow1280 + " " + big, /*term=*/false, soon);
+                   "--size " + kWindow1280 + " " + big, /*selfQuit=*/false, soon);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     state = readState(path("state.txt"));
     loading(state, running, fraction);

@@ -147,7 +147,7 @@ TEST_F(ViewerGui, F1AndQuestionMarkOpenTheHelpOverTheImage) {
     for (const char* key : {"F1", "question"}) {
         SCOPED_TRACE(key);
         const Outcome r = driveSteps(std::string("at 800 400; key ") + key + "; pause 0.5",
-                                     "--size " + kWindow1280 + " --window-shot window.png", true);
+                                     "--size " + kWindow1280 + " --window-shot window.png");
         ASSERT_EQ(r.exitCode, 0) << r.out;
         const auto state = readState(path("state.txt"));
         EXPECT_EQ(state.at("help"), "1");

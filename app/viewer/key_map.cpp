@@ -15,7 +15,11 @@ using enum Action;
 // Letters are matched in both cases: Shift or Caps Lock should not make a key dead.
 constexpr std::array kKeys{
     KeyBinding{Help, "F1  ?", "this help", "?", NamedKey::F1, std::nullopt},
-    KeyBinding{Quit, "Esc", "close the help, else quit", "", NamedKey::Escape, std::nullopt},
+    KeyBinding{Back, "Esc",
+               "close the innermost: drop-down, pop-up, inspector, table, help, fullscreen", "",
+               NamedKey::Escape, std::nullopt},
+    KeyBinding{Quit, "Ctrl+Q", "quit (asks once if the scene has unsaved changes)", "",
+               NamedKey::CtrlQ, std::nullopt},
     KeyBinding{TogglePanels, "Tab", "hide or show the side bar", "", NamedKey::Tab, std::nullopt},
     KeyBinding{FrameModel, "F", "frame the model (its bounding sphere)", "fF", std::nullopt,
                std::nullopt},
@@ -91,6 +95,15 @@ std::string_view keysFor(Action action) {
     for (const KeyBinding& k : kKeys)
         if (k.action == action) return k.keys;
     return {};
+}
+
+EscTarget escTarget(const OpenThings& open) {
+    if (open.popup) return EscTarget::Popup;
+    if (open.inspector) return EscTarget::Inspector;
+    if (open.measureTable) return EscTarget::MeasureTable;
+    if (open.help) return EscTarget::Help;
+    if (open.fullscreen) return EscTarget::Fullscreen;
+    return EscTarget::None;
 }
 
 bool applyDocumentAction(Action action, ViewerModel& model, CompareSettings& compare) {

@@ -40,7 +40,7 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     CLI::App app{
         "facet-view: the facet rasterizer in a window. Drag with the left button to orbit, the "
         "right or middle one to pan, turn the wheel to zoom; F1 or ? lists every key, F12 or P "
-        "saves a screenshot, Esc quits."};
+        "saves a screenshot, Esc closes what is open, Ctrl+Q quits."};
     app.add_option("scene", o.scene,
                    "The .scene file or bare .off/.obj mesh to open (default: "
                    "assets/default.scene)");

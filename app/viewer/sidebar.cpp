@@ -251,6 +251,7 @@ void drawPanels(App& app) {
         compareOverlay(app);
     sceneFileEvents(app);
     errorPopup(app);
+    quitPopup(app);
     switch (sidebarState(app)) {
         case SidebarState::Open:
             sidebar(app);

@@ -46,9 +46,20 @@ void onGlfwError(int, const char* description) {
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
-    // Ctrl+S saves even from a text field (the save path's own, typically).
+    // Ctrl+S saves even from a text field (the save path's own, typically); Ctrl+Q quits
+    // from anywhere, the quit question too.
     if (app && key == GLFW_KEY_S && (mods & GLFW_MOD_CONTROL)) {
         app->keys.saveScene = true;
+        return;
+    }
+    if (app && key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL)) {
+        app->work.actions.push_back(Action::Quit);
+        return;
+    }
+    // Esc closes the innermost thing, a modal pop-up too (which owns the keyboard), unless a
+    // text field is being edited: there it leaves the field.
+    if (app && key == GLFW_KEY_ESCAPE && !ImGui::GetIO().WantTextInput) {
+        app->work.actions.push_back(Action::Back);
         return;
     }
     // A text field being edited owns the keyboard (P is a letter, Esc leaves the field).
@@ -84,6 +95,14 @@ void onChar(GLFWwindow* window, unsigned codepoint) {
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
     if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
     if (const std::optional<Action> a = actionForChar(codepoint)) app->work.actions.push_back(*a);
+}
+
+/// The window's close button asks as Ctrl+Q does (askToQuit, in the next frame).
+void onClose(GLFWwindow* window) {
+    App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    if (!app) return;
+    glfwSetWindowShouldClose(window, GLFW_FALSE);
+    app->work.actions.push_back(Action::Quit);
 }
 
 void onContentScale(GLFWwindow* window, float, float) {
@@ -140,6 +159,7 @@ void adoptScene(App& app, LoadedScene loaded) {
         // it loads before the window opens (they were checked then).
         app.startupLoad = false;
         (void)applyOptions(app.options, app.model.settings);
+        app.model.markSaved();  // what the command line asked for is no unsaved change
     }
     app.ui.scenePath = path;
     app.ui.texturePath = app.model.scene.texturePath;
@@ -215,7 +235,8 @@ int App::run() {
         applySceneDefaults(model.scene, model.bareMesh, model.settings);
     }
     if (!error) error = applyOptions(options, model.settings);
-    if (error) {  // bad input is reported the same with or without a display
+    model.markSaved();  // the command line's choices are where the user starts
+    if (error) {        // bad input is reported the same with or without a display
         std::fprintf(stderr, "facet-view: %s\n", error->what().c_str());
         return 2;
     }
@@ -272,6 +293,7 @@ int App::run() {
     // Before ImGui's, which chain to them.
     glfwSetKeyCallback(window, onKey);
     glfwSetCharCallback(window, onChar);
+    glfwSetWindowCloseCallback(window, onClose);
     glfwSetWindowContentScaleCallback(window, onContentScale);
     installFileDrop(*this);
 

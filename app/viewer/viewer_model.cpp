@@ -24,12 +24,39 @@ void ViewerModel::adopt(LoadedScene loaded) {
     resetCamera();
     applySceneDefaults(scene, bareMesh, settings);
     rememberFile(loaded.path);
+    markSaved();
 }
 
 Status ViewerModel::saveScene(const std::string& path) {
     if (Status error = writeScene(scene, path)) return error;
     rememberFile(path);
+    markSaved();
     return std::nullopt;
+}
+
+DocumentState ViewerModel::documentState() const {
+    DocumentState d;
+    d.orbitMoved = orbitMoved;
+    if (orbitMoved) {
+        d.target = orbit.target;
+        d.vertical = orbit.vertical;
+        d.yaw = orbit.yaw;
+        d.pitch = orbit.pitch;
+        d.distance = orbit.distance;
+    }
+    d.focal = focal;
+    d.lighting = scene.lighting;
+    d.settings = settings;
+    d.texturePath = scene.texturePath;
+    return d;
+}
+
+void ViewerModel::markSaved() {
+    saved = documentState();
+}
+
+bool ViewerModel::unsaved() const {
+    return !(documentState() == saved);
 }
 
 void ViewerModel::rememberFile(const std::string& path) {

@@ -22,6 +22,24 @@ namespace facet::view {
 /// Most entries kept in ViewerModel::recent.
 inline constexpr std::size_t kMaxRecent = 10;
 
+/// What "unsaved changes" compares: the view, the light, the material, the settings and the
+/// texture (not the window's size, which a saved scene does not need to keep).
+struct DocumentState {
+    bool orbitMoved = false;  ///< false: the orbit fields below are left at zero
+    glm::dvec3 target{0.0};
+    glm::dvec3 vertical{0.0};
+    double yaw = 0.0;
+    double pitch = 0.0;
+    double distance = 0.0;
+    double focal = 0.0;
+    LightingParams lighting;
+    RenderSettings settings;
+    std::string texturePath;
+
+    /// Every field equal.
+    bool operator==(const DocumentState&) const = default;
+};
+
 /// Scene, view and settings, edited in place between frames.
 struct ViewerModel {
     Scene scene;         ///< what is drawn; scene.camera is rewritten by prepareFrame()
@@ -37,6 +55,8 @@ struct ViewerModel {
     std::string recentFile;           ///< where `recent` is kept across runs; empty: not kept
     bool bareMesh = false;            ///< the scene was made for a bare mesh (conventions §3b)
     std::uint64_t sceneVersion = 0;   ///< counts loads, so copies know when the mesh changed
+
+    DocumentState saved;  ///< the state when the scene was opened or last saved
 
     Renderer renderer;  ///< keeps its scratch buffers from frame to frame
     Framebuffer frame;  ///< the last frame rendered
@@ -54,6 +74,15 @@ struct ViewerModel {
     /// Writes what is shown (the scene with the camera of the last prepareFrame()) as a
     /// .scene file that renders the same frame; it joins the recent list.
     Status saveScene(const std::string& path);
+
+    /// The document's state now, for unsaved().
+    DocumentState documentState() const;
+
+    /// The current state becomes the saved one (after opening, options and saving).
+    void markSaved();
+
+    /// True when camera, light, material, settings or texture changed since markSaved().
+    bool unsaved() const;
 
     /// Puts `path` first in the recent list and writes the list to recentFile.
     void rememberFile(const std::string& path);

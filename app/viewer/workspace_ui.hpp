@@ -51,6 +51,8 @@ struct WorkspaceUi {
     bool accuracyTable = false;           ///< the ground-truth table's window is open
     std::uint64_t accuracyTableSeen = 0;  ///< reports for which the table opened by itself
     std::vector<Action> actions;          ///< keys pressed since the last frame, in order
+    bool quitAsked = false;    ///< the quit question is open: the next Ctrl+Q or close quits
+    bool quitPending = false;  ///< the quit question opens in the next frame
     Notice notice;
     LightDrag lightDrag = LightDrag::None;
     Workspace layout;   ///< this frame's side bar and image area
@@ -104,6 +106,13 @@ void applyUiStyle(float scale, bool rebuild);
 /// The UI scale of the window: --ui-scale when given, else its monitor's content scale
 /// (glfwGetWindowContentScale) over the framebuffer's scale, within 0.5…4.
 float windowUiScale(const App& app);
+
+/// Ctrl+Q or the window's close button: quits, or first asks once when the scene has unsaved
+/// changes (ViewerModel::unsaved).
+void askToQuit(App& app);
+
+/// The question askToQuit opens: save and quit, quit without saving, or cancel (Esc).
+void quitPopup(App& app);
 
 /// Fullscreen on the monitor under the window, or back to the window it was.
 void toggleFullscreen(App& app);
