@@ -19,7 +19,7 @@
 #   save    left drag across the image (orbit), then Ctrl+S (Save scene to the Scene panel's path)
 #   steps   run $FACET_DRIVE_STEPS, ';'-separated commands of this script: drag B X Y DX DY N,
 #           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, shiftclick X Y
-#           (Shift + left click), pause SECONDS
+#           (Shift + left click), press X Y (move and left click at once), pause SECONDS
 # FACET_DRIVE_SETTLE sets the wait before the scenario (1 s by default).
 set -u
 scenario=$1
@@ -77,6 +77,10 @@ shiftclick() {  # x y: left click with Shift held (the pixel inspector)
   sleep 0.5
 }
 pause() { sleep "$1"; }
+press() {  # x y: move there and click at once, in one xdotool call (often within one frame)
+  xdotool mousemove --window "$wid" "$1" "$2" mousedown 1 mouseup 1
+  sleep 0.5
+}
 
 case "$scenario" in
   none) ;;

@@ -4,7 +4,13 @@
 // small window keeps most of its area for the picture.
 
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
 #include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "viewer_gui_support.hpp"
 
@@ -76,6 +82,68 @@ TEST_F(ViewerGui, CtrlQAfterAnOrbitAsksOnceBeforeQuitting) {
         EXPECT_EQ(state.count("window_quit_question"), 0u);
         EXPECT_EQ(state.at("mode"), "wireframe");
     }
+}
+
+const std::string kShared = std::string(FACET_SHARED_DIR) + "/data/models/";
+
+glm::dvec3 vec3Of(const std::map<std::string, std::string>& state, const std::string& key) {
+    std::istringstream in(state.at(key));
+    glm::dvec3 v(0.0);
+    in >> v.x >> v.y >> v.z;
+    return v;
+}
+
+// The bare cow: the light starts farther from the cow than the camera. Dragging its
+// marker across the cow's centre keeps it on the camera's side (n·l > 0 at the centre, for the
+// normal facing the camera); the marker starts in the frame or says it is off screen.
+TEST_F(ViewerGui, ADraggedLightStaysOnTheCamerasSide) {
+    REQUIRE_XDOTOOL();
+    const std::string cow = kShared + "cow.obj";
+    if (!fs::exists(cow)) {
+        if (std::getenv("CI")) FAIL() << cow << " missing";
+        GTEST_SKIP() << cow << " missing";
+    }
+    const std::string args = "--size " + kWindow1280 + " " + cow;
+    Outcome r = driveSteps("pause 0.3", args);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    auto state = readState(path("state.txt"));
+    std::istringstream marker(state.at("light_marker"));
+    int shown = 0, inFrame = 0;
+    double mx = 0.0, my = 0.0;
+    marker >> shown >> mx >> my >> inFrame;
+    ASSERT_EQ(shown, 1) << state.at("light_marker");
+    if (!inFrame) EXPECT_NE(state.at("light_marker_note"), "");
+    // From the marker across the image's centre to as far on the other side.
+    const Rect view = rectOf(state, "view");
+    const double cx = view.x + 0.5 * view.w, cy = view.y + 0.5 * view.h;
+    const int x0 = static_cast<int>(mx), y0 = static_cast<int>(my);
+    const int dx = static_cast<int>(1.3 * (cx - mx)), dy = static_cast<int>(1.3 * (cy - my));
+    r = driveSteps("drag 1 " + std::to_string(x0) + " " + std::to_string(y0) + " " +
+                       std::to_string(dx) + " " + std::to_string(dy) + " 12",
+                   args);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("moved"), "0");  // the light moved, not the camera
+    std::istringstream lightIn(state.at("light"));
+    glm::dvec4 light(0.0);
+    lightIn >> light.x >> light.y >> light.z >> light.w;
+    ASSERT_NE(light.w, 0.0);
+    const glm::dvec3 target = vec3Of(state, "target");
+    const glm::dvec3 n = glm::normalize(vec3Of(state, "eye") - target);
+    const glm::dvec3 l = glm::normalize(glm::dvec3(light) / light.w - target);
+    EXPECT_GT(glm::dot(n, l), 0.0) << state.at("light");
+}
+
+// A click right after a long move (in one go, as at a few frames a second) does not turn the
+// view: the pointer's travel before the press is no drag.
+TEST_F(ViewerGui, APressAfterAMoveDoesNotJump) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = driveSteps("at 500 100; pause 0.5; press 1400 650; press 520 120",
+                                 "--size " + kWindow1280 + " --serial");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("moved"), "0")
+        << "yaw " << state.at("yaw") << " pitch " << state.at("pitch");
 }
 
 }  // namespace

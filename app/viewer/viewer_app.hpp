@@ -55,6 +55,8 @@ struct UiState {
 struct DragState {
     int button = -1;       ///< ImGui mouse button, −1: none
     bool divider = false;  ///< the drag moves the Compare divider
+    float lastX = 0.0f;    ///< where the pointer was last frame (at the press on its first)
+    float lastY = 0.0f;
 };
 
 /// What the keys (key_map.hpp, dispatched by handleInput) asked the frame loop for.

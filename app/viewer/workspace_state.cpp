@@ -55,6 +55,7 @@ std::string workspaceStateText(const App& app) {
                   app.view.y + at.y * app.view.h / std::max(1, c.height),
                   markerInFrame(m, c.width, c.height) ? 1 : 0);
     s << "light_marker " << marker << "\n";
+    s << "light_marker_note " << w.markerNote << "\n";
     return s.str();
 }
 

@@ -55,8 +55,9 @@ struct WorkspaceUi {
     bool quitPending = false;  ///< the quit question opens in the next frame
     Notice notice;
     LightDrag lightDrag = LightDrag::None;
-    Workspace layout;   ///< this frame's side bar and image area
-    Backdrop backdrop;  ///< the side bar's background, left to GlFrame (empty: ImGui draws it)
+    std::string markerNote;  ///< the words beside an off-screen light's marker, this frame
+    Workspace layout;        ///< this frame's side bar and image area
+    Backdrop backdrop;       ///< the side bar's background, left to GlFrame (empty: ImGui draws it)
     std::map<std::string, Rect> drawn;  ///< windows drawn this frame, by name (for --state)
 };
 
