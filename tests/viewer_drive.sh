@@ -16,7 +16,8 @@
 #   renderers  press G four times, a second apart: CPU engine → OpenGL twin → side by side →
 #           CPU engine → OpenGL twin
 #   combo   open the Render panel's renderer combo and click its second entry (OpenGL twin)
-#   save    left drag across the image (orbit), then Ctrl+S (Save scene to the Scene panel's path)
+#   save    left drag across the image (orbit), then Ctrl+S; in the save dialog the path
+#           $FACET_DRIVE_SAVE_AS (when set) and Enter
 #   steps   run $FACET_DRIVE_STEPS, ';'-separated commands of this script: drag B X Y DX DY N,
 #           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, shiftclick X Y
 #           (Shift + left click), press X Y (move and left click at once), pause SECONDS
@@ -87,6 +88,17 @@ case "$scenario" in
   save)
     drag 1 800 450 150 -40 6
     xdotool key --window "$wid" ctrl+s
+    sleep 0.7
+    # The first save asks where: the path field has the focus; FACET_DRIVE_SAVE_AS replaces it.
+    if [ -n "${FACET_DRIVE_SAVE_AS:-}" ]; then
+      xdotool key ctrl+a
+      xdotool type --delay 10 "$FACET_DRIVE_SAVE_AS"
+      sleep 0.3
+    fi
+    # Held for a frame: ImGui sees keys by their state once a frame, not by their events.
+    xdotool keydown Return
+    sleep 0.15
+    xdotool keyup Return
     sleep 1
     ;;
   orbit)

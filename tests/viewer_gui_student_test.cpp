@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -144,6 +145,41 @@ TEST_F(ViewerGui, APressAfterAMoveDoesNotJump) {
     const auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("moved"), "0")
         << "yaw " << state.at("yaw") << " pitch " << state.at("pitch");
+}
+
+// Orbit a bare cow and Ctrl+S: the first save asks where (the cow's folder proposed), the
+// notice says where it went, and the saved scene reopens with the same picture (not a white
+// silhouette: both open lit, by conventions §9) at the bare mesh's own size.
+TEST_F(ViewerGui, ASavedBareMeshSceneReopensWithTheSamePicture) {
+    REQUIRE_XDOTOOL();
+    const std::string cow = kShared + "cow.obj";
+    if (!fs::exists(cow)) {
+        if (std::getenv("CI")) FAIL() << cow << " missing";
+        GTEST_SKIP() << cow << " missing";
+    }
+    Outcome r = drive("save", "--size " + kWindow1280 + " " + cow,
+                      "FACET_DRIVE_SAVE_AS=" + path("cow.scene"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    ASSERT_TRUE(fs::exists(path("cow.scene"))) << r.out;
+    auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("moved"), "1");
+    EXPECT_EQ(state.at("notice"), "Saved to " + path("cow.scene"));
+    EXPECT_EQ(state.at("lighting"), "gouraud");
+    const Framebuffer before = readPng(path("frame.png"));
+    fs::rename(path("frame.png"), path("before.png"));
+
+    r = driveSteps("pause 0.3", "--size " + kWindow1280 + " " + path("cow.scene"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("lighting"), "gouraud");
+    EXPECT_EQ(state.at("size"), "1280 720");
+    const Framebuffer after = readPng(path("frame.png"));
+    ASSERT_EQ(before.width, after.width);
+    ASSERT_EQ(before.height, after.height);
+    EXPECT_LT(differingShare(before, after, 0, 0, after.width, after.height), 0.001);
+    // The picture is lit, not one flat colour: many distinct pixel values on the cow.
+    std::set<std::uint32_t> colours(after.color.begin(), after.color.end());
+    EXPECT_GT(colours.size(), 50u);
 }
 
 }  // namespace

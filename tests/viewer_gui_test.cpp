@@ -229,7 +229,8 @@ TEST_F(ViewerGui, CtrlSSavesABareModelAfterOrbitingAsASceneThatRendersTheFrame) 
     REQUIRE_XDOTOOL();
     const std::string teapot = std::string(FACET_SHARED_DIR) + "/data/models/teapot.obj";
     if (!fs::exists(teapot)) GTEST_SKIP() << teapot << " not found";
-    const Outcome r = drive("save", "--size " + kWindow1280 + " " + teapot);
+    const Outcome r = drive("save", "--size " + kWindow1280 + " " + teapot,
+                            "FACET_DRIVE_SAVE_AS=" + path("teapot.scene"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
     ASSERT_TRUE(fs::exists(path("teapot.scene"))) << r.out;
     const auto state = readState(path("state.txt"));

@@ -20,6 +20,7 @@
 
 #include "facet/camera.hpp"
 #include "facet/render.hpp"
+#include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 #include "file_list.hpp"
@@ -649,7 +650,7 @@ TEST(ViewerModels, SavedAfterOrbitingTheFrameRendersByteForByte) {
         m.prepareFrame(800, 500);  // the window's size, not the scene's
         const Framebuffer shown = m.render();
         const std::string saved = (dir / (fs::path(file).stem().string() + ".scene")).string();
-        ASSERT_FALSE(m.saveScene(saved));
+        ASSERT_FALSE(m.saveScene(saved, /*windowSize=*/true));
         EXPECT_EQ(m.recent.front(), fs::absolute(saved).lexically_normal().string());
 
         Result<Scene> back = loadScene(saved);
@@ -659,6 +660,19 @@ TEST(ViewerModels, SavedAfterOrbitingTheFrameRendersByteForByte) {
         Framebuffer again;
         renderer.render(*back, m.settings, again);
         EXPECT_EQ(again.color, shown.color) << file;
+
+        // By default the scene keeps its own image size, with the view shown: it renders what
+        // the viewer draws at that size (--keep-scene-size).
+        ASSERT_FALSE(m.saveScene(saved));
+        back = loadScene(saved);
+        ASSERT_TRUE(back) << back.error().what();
+        EXPECT_EQ(back->camera.width, m.sceneCamera.width);
+        EXPECT_EQ(back->camera.height, m.sceneCamera.height);
+        m.sizePolicy = SizePolicy::SceneSize;
+        m.prepareFrame(800, 500);
+        const Framebuffer atSceneSize = m.render();
+        renderer.render(*back, m.settings, again);
+        EXPECT_EQ(again.color, atSceneSize.color) << file;
     }
     fs::remove_all(dir);
 }
@@ -799,15 +813,49 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     EXPECT_GT(m.scene.mesh->triangleCount(), 99000u);  // a failure changes nothing
 }
 
-TEST(ViewerModels, TheDefaultSavePathIsAFreeNameInTheCurrentFolder) {
-    EXPECT_EQ(defaultSavePath("/somewhere/read-only/teapot.obj"), "teapot.scene");
+TEST(ViewerModels, TheDefaultSavePathIsAFreeNameInTheOpenedFilesFolder) {
+    EXPECT_EQ(defaultSavePath("/somewhere/read-only/teapot.obj"),
+              "/somewhere/read-only/teapot.scene");
     const fs::path dir = scratchFolder();
+    std::ofstream(dir / "teapot.scene") << "x";
+    EXPECT_EQ(defaultSavePath((dir / "teapot.obj").string()), (dir / "teapot-0001.scene").string());
+    // A relative name is made absolute: the save never lands silently in the working folder.
     const fs::path old = fs::current_path();
     fs::current_path(dir);
-    std::ofstream("teapot.scene") << "x";
-    EXPECT_EQ(defaultSavePath("/x/teapot.obj"), "teapot-0001.scene");
+    EXPECT_EQ(defaultSavePath("teapot.obj"), (dir / "teapot-0001.scene").string());
     fs::current_path(old);
     fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// Conventions §9 by every route: a texture chosen in the browser, dropped, typed in the Texture
+// panel or given as --texture all go through ViewerModel::loadTexture, which picks the settings
+// that show it whatever was set before: the course's coloured wall shows the texel alone.
+TEST(ViewerModels, ATextureByAnyRouteOpensWithTheSameSettings) {
+    const std::string course = std::string(FACET_SHARED_DIR) + "/data/course/";
+    if (!fs::exists(course + "textured_facet.off")) GTEST_SKIP() << "shared data not found";
+    Framebuffer first;
+    for (const ShaderKind before : {ShaderKind::Depth, ShaderKind::Painter, ShaderKind::Texture}) {
+        ViewerModel m;
+        ASSERT_FALSE(m.load(course + "textured_facet.off"));
+        m.settings.shader = before;
+        m.settings.combine = true;
+        m.settings.lighting = Lighting::Phong;
+        ASSERT_FALSE(m.loadTexture(course + "brick.jpg"));
+        RenderSettings expected = m.settings;
+        applyOpeningSettings(m.scene, expected);
+        EXPECT_EQ(m.settings, expected);
+        EXPECT_EQ(m.settings.shader, ShaderKind::Texture);
+        m.prepareFrame(640, 480);
+        const Framebuffer& f = m.render();
+        if (first.color.empty())
+            first = f;
+        else
+            EXPECT_EQ(f.color, first.color);
+    }
 }
 
 }  // namespace

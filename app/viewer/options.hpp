@@ -30,7 +30,7 @@ struct ViewerOptions {
     double uiScale = 0.0;          ///< --ui-scale: fonts and widgets (0: the monitor's scale)
 
     // Start-up render settings, as `facet render` spells them (already checked when parsed).
-    // Shader and lighting left empty: the scene decides (applySceneDefaults).
+    // Shader and lighting left empty: the scene decides (applyOpeningSettings, conventions §9).
     std::string mode = "solid";
     std::string shader;
     std::string interp = "perspective";

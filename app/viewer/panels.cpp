@@ -42,11 +42,11 @@ void quitPopup(App& app) {
             "The scene has unsaved changes (camera, light, material or settings).");
         ImGui::TextDisabled("Ctrl+Q again quits, Esc stays.");
         if (ImGui::Button("Save and quit")) {
-            saveShownScene(app);
             // A failed save keeps the viewer open: its error says why.
-            if (!app.model.unsaved()) app.keys.quit = true;
+            if (writeShownScene(app)) app.keys.quit = true;
             ImGui::CloseCurrentPopup();
         }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("to %s", app.ui.saveScenePath.c_str());
         ImGui::SameLine();
         if (ImGui::Button("Quit without saving")) app.keys.quit = true;
         ImGui::SameLine();

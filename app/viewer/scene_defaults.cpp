@@ -2,22 +2,6 @@
 
 namespace facet::view {
 
-void applySceneDefaults(const Scene& scene, bool bareMesh, RenderSettings& settings) {
-    if (scene.texture && scene.mesh->hasUvs()) {
-        settings.shader = ShaderKind::Texture;
-        settings.combine = true;
-        settings.lighting = Lighting::Gouraud;
-    } else if (bareMesh) {
-        settings.shader = ShaderKind::Painter;
-        settings.combine = false;
-        settings.lighting = Lighting::Gouraud;
-    } else {
-        settings.shader = ShaderKind::Painter;
-        settings.combine = false;
-        settings.lighting = Lighting::Off;
-    }
-}
-
 void lightingChosen(RenderSettings& settings) {
     if (settings.shader == ShaderKind::Texture && settings.lighting != Lighting::Off)
         settings.combine = true;

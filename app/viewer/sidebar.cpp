@@ -252,6 +252,7 @@ void drawPanels(App& app) {
     sceneFileEvents(app);
     errorPopup(app);
     quitPopup(app);
+    saveDialog(app);
     switch (sidebarState(app)) {
         case SidebarState::Open:
             sidebar(app);

@@ -164,6 +164,7 @@ void adoptScene(App& app, LoadedScene loaded) {
     app.ui.scenePath = path;
     app.ui.texturePath = app.model.scene.texturePath;
     app.ui.saveScenePath = defaultSavePath(path);
+    app.ui.saveChosen = false;  // a new scene: its first save asks where again
     if (app.window) glfwSetWindowTitle(app.window, windowTitle(app.model.scene).c_str());
 }
 
@@ -229,11 +230,11 @@ int App::run() {
     // After the load: the default scene shown meanwhile is not one the user opened.
     model.recentFile = configFolder().empty() ? "" : configFolder() + "/recent.txt";
     model.recent = readRecent(model.recentFile, kMaxRecent);
+    // A file named on the command line is one the user opened (the default scene is not).
+    if (!error && !startupLoad && path != defaultScenePath()) model.rememberFile(path);
     if (startupLoad) loading.start(path, kBareMeshWidth, kBareMeshHeight);
-    if (!error && !options.texture.empty()) {
-        error = model.loadTexture(options.texture);
-        applySceneDefaults(model.scene, model.bareMesh, model.settings);
-    }
+    // The same route as a texture chosen in the window (ViewerModel::loadTexture).
+    if (!error && !options.texture.empty()) error = model.loadTexture(options.texture);
     if (!error) error = applyOptions(options, model.settings);
     model.markSaved();  // the command line's choices are where the user starts
     if (error) {        // bad input is reported the same with or without a display

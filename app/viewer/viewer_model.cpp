@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 #include "file_list.hpp"
 #include "scene_defaults.hpp"
@@ -22,13 +23,22 @@ void ViewerModel::adopt(LoadedScene loaded) {
     ++sceneVersion;
     sceneCamera = scene.camera;
     resetCamera();
-    applySceneDefaults(scene, bareMesh, settings);
+    applyOpeningSettings(scene, settings);
     rememberFile(loaded.path);
     markSaved();
 }
 
-Status ViewerModel::saveScene(const std::string& path) {
-    if (Status error = writeScene(scene, path)) return error;
+Camera ViewerModel::userCamera() const {
+    Camera user = sceneCamera;
+    if (orbitMoved) applyPose(orbit, user);
+    if (focal > 0.0 && std::isfinite(focal)) user.focal = focal;
+    return user;
+}
+
+Status ViewerModel::saveScene(const std::string& path, bool windowSize) {
+    Scene out = scene;  // shares the mesh and texture
+    if (!windowSize) out.camera = userCamera();
+    if (Status error = writeScene(out, path)) return error;
     rememberFile(path);
     markSaved();
     return std::nullopt;
@@ -65,7 +75,9 @@ void ViewerModel::rememberFile(const std::string& path) {
 }
 
 Status ViewerModel::loadTexture(const std::string& path) {
-    return loadSceneTexture(scene, path);
+    if (Status error = loadSceneTexture(scene, path)) return error;
+    applyOpeningSettings(scene, settings);
+    return std::nullopt;
 }
 
 void ViewerModel::resetCamera() {
@@ -95,10 +107,7 @@ void ViewerModel::orbitEdited() {
 }
 
 const Camera& ViewerModel::prepareFrame(int windowWidth, int windowHeight) {
-    Camera user = sceneCamera;
-    if (orbitMoved) applyPose(orbit, user);
-    if (focal > 0.0 && std::isfinite(focal)) user.focal = focal;
-    scene.camera = frameCamera(user, sizePolicy, windowWidth, windowHeight);
+    scene.camera = frameCamera(userCamera(), sizePolicy, windowWidth, windowHeight);
     return scene.camera;
 }
 

@@ -68,12 +68,16 @@ struct ViewerModel {
     Status load(const std::string& path);
 
     /// Takes a loaded scene: resets the view, picks the settings that show what the scene has
-    /// (applySceneDefaults) and puts the file first in the recent list.
+    /// (applyOpeningSettings, conventions §9) and puts the file first in the recent list.
     void adopt(LoadedScene loaded);
 
-    /// Writes what is shown (the scene with the camera of the last prepareFrame()) as a
-    /// .scene file that renders the same frame; it joins the recent list.
-    Status saveScene(const std::string& path);
+    /// Writes what is shown as a .scene file; it joins the recent list. The camera keeps the
+    /// scene's image size (the view, focal length and pose shown, as --keep-scene-size draws
+    /// them), or with `windowSize` is the last prepareFrame()'s, so the file renders that frame.
+    Status saveScene(const std::string& path, bool windowSize = false);
+
+    /// The user's camera at the scene's own image size (what saveScene writes by default).
+    Camera userCamera() const;
 
     /// The document's state now, for unsaved().
     DocumentState documentState() const;
@@ -87,7 +91,9 @@ struct ViewerModel {
     /// Puts `path` first in the recent list and writes the list to recentFile.
     void rememberFile(const std::string& path);
 
-    /// Replaces the scene's texture with an image file; on failure nothing changes.
+    /// Replaces the scene's texture with an image file and picks the settings that show it
+    /// (applyOpeningSettings: every route to a texture gives the same picture); on failure
+    /// nothing changes.
     Status loadTexture(const std::string& path);
 
     /// Back to the scene file's camera (pose and focal length).
