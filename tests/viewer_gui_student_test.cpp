@@ -3,6 +3,7 @@
 // side the camera sees, a saved scene reopens as it looked, a Z-up model stands upright, and a
 // small window keeps most of its area for the picture.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <set>
@@ -180,6 +181,51 @@ TEST_F(ViewerGui, ASavedBareMeshSceneReopensWithTheSamePicture) {
     // The picture is lit, not one flat colour: many distinct pixel values on the cow.
     std::set<std::uint32_t> colours(after.color.begin(), after.color.end());
     EXPECT_GT(colours.size(), 50u);
+}
+
+/// Width over height of the pixels that differ from the background (the model's silhouette).
+double silhouetteAspect(const Framebuffer& f) {
+    const std::uint32_t background = f.color[0];
+    int x0 = f.width, y0 = f.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x)
+            if (f.color[f.index(x, y)] != background) {
+                x0 = std::min(x0, x);
+                x1 = std::max(x1, x);
+                y0 = std::min(y0, y);
+                y1 = std::max(y1, y);
+            }
+    if (x1 < x0 || y1 < y0) return NAN;
+    return static_cast<double>(x1 - x0 + 1) / static_cast<double>(y1 - y0 + 1);
+}
+
+// Nefertiti is a Z-up scan: --up z shows the bust upright (taller than wide), the default Y
+// shows it lying (wider than tall); the state's up vector (the camera's y hint) is −Z.
+TEST_F(ViewerGui, UpZShowsNefertitiUpright) {
+    REQUIRE_XVFB();
+    const std::string nefertiti = kShared + "nefertiti.obj";
+    if (!fs::exists(nefertiti)) {
+        if (std::getenv("CI")) FAIL() << nefertiti << " missing";
+        GTEST_SKIP() << nefertiti << " missing";
+    }
+    for (const char* up : {"z", "y"}) {
+        const Outcome r =
+            viewer("--frames 3 --no-vsync --size " + kWindow1280 +
+                   " --state state.txt --screenshot frame.png --up " + up + " " + nefertiti);
+        ASSERT_EQ(r.exitCode, 0) << r.out;
+        const double aspect = silhouetteAspect(readPng(path("frame.png")));
+        const auto state = readState(path("state.txt"));
+        if (std::string(up) == "z") {
+            EXPECT_LT(aspect, 0.8) << "not upright";
+            const glm::dvec3 hint = vec3Of(state, "up");
+            EXPECT_NEAR(hint.z, -1.0, 1e-9);
+        } else {
+            EXPECT_GT(aspect, 1.0) << "the default Y should show it lying";
+        }
+    }
+    const Outcome bad = viewer("--frames 1 --up w " + nefertiti);
+    EXPECT_EQ(bad.exitCode, 2) << bad.out;
+    EXPECT_NE(bad.out.find("--up w"), std::string::npos) << bad.out;
 }
 
 }  // namespace

@@ -764,7 +764,7 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     const std::size_t before = m.scene.mesh->triangleCount();
 
     LoadJob job;
-    job.start(nefertiti, 640, 360);
+    job.start(nefertiti, OpenOptions{640, 360});
     EXPECT_TRUE(job.running());
     // start() returns before the 100k-triangle file is read: the caller's frames go on.
     EXPECT_FALSE(job.take().has_value());
@@ -782,7 +782,7 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     EXPECT_FALSE(job.take().has_value());
     EXPECT_EQ(m.scene.mesh->triangleCount(), before);
 
-    job.start(nefertiti, 640, 360);
+    job.start(nefertiti, OpenOptions{640, 360});
     std::optional<Result<LoadedScene>> done;
     std::vector<float> bar;  // what the loading window showed, frame by frame
     for (int i = 0; i < 6000 && !done; ++i) {
@@ -799,7 +799,7 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     m.adopt(std::move(*done).value());
     EXPECT_GT(m.scene.mesh->triangleCount(), 99000u);
 
-    job.start("/no/such/file.obj", 640, 360);
+    job.start("/no/such/file.obj", OpenOptions{640, 360});
     for (int i = 0; i < 500 && !done; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
     done.reset();
@@ -856,6 +856,55 @@ TEST(ViewerModels, ATextureByAnyRouteOpensWithTheSameSettings) {
         else
             EXPECT_EQ(f.color, first.color);
     }
+}
+
+}  // namespace
+
+namespace {
+
+// Conventions §3b in the viewer: the up axis frames a bare mesh as --up does, is the axis the
+// orbit turns about, and a saved scene carries it (its camera's up vector).
+TEST(ViewerModels, TheUpAxisFramesOrbitsAndIsSavedWithTheScene) {
+    const std::string cow = kModels + "/cow.obj";
+    if (!fs::exists(cow)) GTEST_SKIP() << "shared data not found";
+    ViewerModel opened;
+    opened.up = UpAxis::Z;
+    ASSERT_FALSE(opened.load(cow));
+    EXPECT_EQ(opened.orbitAxis(), UpAxis::Z);
+    ViewerModel chosen;
+    ASSERT_FALSE(chosen.load(cow));
+    EXPECT_EQ(chosen.orbitAxis(), UpAxis::Y);
+    chosen.setUpAxis(UpAxis::Z);  // the Camera panel's choice: the same as opening with it
+    EXPECT_EQ(chosen.sceneCamera, opened.sceneCamera);
+    EXPECT_EQ(chosen.orbitAxis(), UpAxis::Z);
+
+    // Orbiting turns about Z: the eye's height along Z stays.
+    chosen.rotate(120.0, 0.0);
+    const Camera& turned = chosen.prepareFrame(1280, 720);
+    EXPECT_NEAR(turned.eye.z - turned.look.z, opened.sceneCamera.eye.z - opened.sceneCamera.look.z,
+                1e-9);
+    EXPECT_NE(turned.eye.x, opened.sceneCamera.eye.x);
+
+    // Saved and opened again (with the default Y): still Z up.
+    const fs::path dir = scratchFolder();
+    const std::string saved = (dir / "cow_z.scene").string();
+    ASSERT_FALSE(chosen.saveScene(saved));
+    ViewerModel back;
+    ASSERT_FALSE(back.load(saved));
+    EXPECT_EQ(back.orbitAxis(), UpAxis::Z);
+
+    // A .scene keeps the view shown when the axis changes; the orbit measures from the new one.
+    ViewerModel scene;
+    ASSERT_FALSE(scene.load(saved));
+    const Camera before = scene.prepareFrame(1280, 720);
+    scene.setUpAxis(UpAxis::Y);
+    EXPECT_EQ(scene.orbitAxis(), UpAxis::Y);
+    const Camera after = scene.prepareFrame(1280, 720);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(after.eye[i], before.eye[i], 1e-9);
+        EXPECT_NEAR(after.look[i], before.look[i], 1e-9);
+    }
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -70,6 +70,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_flag("--serial", o.serial,
                  "Render the next frame only after drawing this one (default: at the same time)");
     app.add_option("--texture", o.texture, "Texture image replacing the scene's");
+    app.add_option("--up", o.up,
+                   "World axis shown up for a bare mesh, x, y or z (default y; Z-up scans and CAD "
+                   "models want z); framing and orbiting use it, a saved scene keeps it");
     app.add_option("--ui-scale", o.uiScale,
                    "Scale of the panels' fonts and widgets (default: the monitor's content scale)")
         ->check(CLI::Range(0.5, 4.0));

@@ -23,6 +23,18 @@ void cameraPanel(App& app) {
     edited |= dragDouble3("look-at", &o.target.x, std::max(1e-6, o.distance * 0.005), "%.3f");
     if (edited) m.orbitEdited();
     sliderDouble("focal (px)", m.focal, 10.0, 100000.0, "%.1f", true);
+    // The world axis shown up: a bare mesh is framed again for it, a scene turns its orbit.
+    const std::optional<UpAxis> axis = m.orbitAxis();
+    ImGui::TextUnformatted("up axis");
+    for (const UpAxis a : {UpAxis::X, UpAxis::Y, UpAxis::Z}) {
+        ImGui::SameLine();
+        const char* names[] = {"X", "Y", "Z"};
+        if (ImGui::RadioButton(names[static_cast<int>(a)], axis == a)) m.setUpAxis(a);
+    }
+    if (!axis) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(the scene's own)");
+    }
     if (ImGui::Button("Frame the model (F)")) frameModel(m);
     ImGui::SameLine();
     if (ImGui::Button("Scene's camera (Home, R)")) m.resetCamera();

@@ -148,7 +148,7 @@ void showError(App& app, const std::string& title, const std::string& message) {
 void openScene(App& app, const std::string& path) {
     app.startupLoad = false;  // replaced: the command line's file is no longer coming
     app.ui.scenePath = path;
-    app.loading.start(path, kBareMeshWidth, kBareMeshHeight);
+    app.loading.start(path, app.model.openOptions());
 }
 
 void adoptScene(App& app, LoadedScene loaded) {
@@ -226,13 +226,17 @@ int App::run() {
                   options.texture.empty() && std::filesystem::is_regular_file(path, sizeError) &&
                   std::filesystem::file_size(path, sizeError) > kStartupLoadBytes &&
                   !defaultScenePath().empty();
+    if (const std::optional<UpAxis> up = parseUpAxis(options.up))
+        model.up = *up;
+    else if (!error)
+        error = Error{{}, "--up " + options.up + ": expected x, y or z"};
     if (!error) error = model.load(startupLoad ? defaultScenePath() : path);
     // After the load: the default scene shown meanwhile is not one the user opened.
     model.recentFile = configFolder().empty() ? "" : configFolder() + "/recent.txt";
     model.recent = readRecent(model.recentFile, kMaxRecent);
     // A file named on the command line is one the user opened (the default scene is not).
     if (!error && !startupLoad && path != defaultScenePath()) model.rememberFile(path);
-    if (startupLoad) loading.start(path, kBareMeshWidth, kBareMeshHeight);
+    if (startupLoad) loading.start(path, model.openOptions());
     // The same route as a texture chosen in the window (ViewerModel::loadTexture).
     if (!error && !options.texture.empty()) error = model.loadTexture(options.texture);
     if (!error) error = applyOptions(options, model.settings);

@@ -1,6 +1,8 @@
 #include "viewer_model.hpp"
 
 #include <cmath>
+
+#include <glm/geometric.hpp>
 #include <utility>
 
 #include "facet/scene_defaults.hpp"
@@ -11,7 +13,7 @@
 namespace facet::view {
 
 Status ViewerModel::load(const std::string& path) {
-    Result<LoadedScene> loaded = loadSceneOrMesh(path, kBareMeshWidth, kBareMeshHeight);
+    Result<LoadedScene> loaded = loadSceneOrMesh(path, openOptions());
     if (!loaded) return loaded.error();
     adopt(std::move(loaded).value());
     return std::nullopt;
@@ -77,6 +79,44 @@ void ViewerModel::rememberFile(const std::string& path) {
 Status ViewerModel::loadTexture(const std::string& path) {
     if (Status error = loadSceneTexture(scene, path)) return error;
     applyOpeningSettings(scene, settings);
+    return std::nullopt;
+}
+
+OpenOptions ViewerModel::openOptions() const {
+    return OpenOptions{kBareMeshWidth, kBareMeshHeight, up};
+}
+
+void ViewerModel::setUpAxis(UpAxis axis) {
+    up = axis;
+    if (bareMesh) {
+        // The scene as opening the mesh with this axis gives it (one copy of the mesh, once).
+        const Scene framed =
+            sceneForMesh(*scene.mesh, scene.meshPath, sceneCamera.width, sceneCamera.height, axis);
+        sceneCamera = framed.camera;
+        scene.lighting.light = framed.lighting.light;
+        resetCamera();
+        return;
+    }
+    // The view stays; yaw and pitch are measured about the new vertical from now on.
+    const Pose pose = orbitPose(orbit);
+    Orbit basis = orbit;
+    basis.vertical = upVector(axis);
+    const glm::dvec3 offset = pose.eye - pose.look;
+    const glm::dvec3 flat = offset - glm::dot(offset, basis.vertical) * basis.vertical;
+    const double n = glm::length(flat);
+    if (n > 1e-9 * glm::length(offset))
+        basis.reference = flat / n;
+    else  // looking straight along the axis: any direction across it
+        basis.reference = glm::normalize(glm::cross(basis.vertical, std::abs(basis.vertical.x) < 0.6
+                                                                        ? glm::dvec3(1, 0, 0)
+                                                                        : glm::dvec3(0, 1, 0)));
+    orbit = orbitMeasure(basis, pose.eye, pose.look);
+    orbitMoved = true;
+}
+
+std::optional<UpAxis> ViewerModel::orbitAxis() const {
+    for (const UpAxis a : {UpAxis::X, UpAxis::Y, UpAxis::Z})
+        if (std::abs(glm::dot(orbit.vertical, upVector(a))) > 0.9999) return a;
     return std::nullopt;
 }
 

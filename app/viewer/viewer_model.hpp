@@ -4,6 +4,7 @@
 // directly (a Ks change shows in the next frame; a malformed scene keeps the old one).
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/render.hpp"
 #include "facet/scene.hpp"
+#include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
 #include "load_job.hpp"
 #include "orbit.hpp"
@@ -54,6 +56,7 @@ struct ViewerModel {
     std::vector<std::string> recent;  ///< scene and mesh files opened, most recent first
     std::string recentFile;           ///< where `recent` is kept across runs; empty: not kept
     bool bareMesh = false;            ///< the scene was made for a bare mesh (conventions §3b)
+    UpAxis up = UpAxis::Y;            ///< the world axis a bare mesh opens with up (--up)
     std::uint64_t sceneVersion = 0;   ///< counts loads, so copies know when the mesh changed
 
     DocumentState saved;  ///< the state when the scene was opened or last saved
@@ -95,6 +98,17 @@ struct ViewerModel {
     /// (applyOpeningSettings: every route to a texture gives the same picture); on failure
     /// nothing changes.
     Status loadTexture(const std::string& path);
+
+    /// How a bare mesh is opened: its image size and `up`.
+    OpenOptions openOptions() const;
+
+    /// Makes `axis` the world direction shown up and orbited about (conventions §3b): a bare
+    /// mesh is framed again for it (camera and light, as if opened with --up); a .scene keeps
+    /// the view shown and turns the orbit's vertical to the axis.
+    void setUpAxis(UpAxis axis);
+
+    /// The axis the orbit turns about, when it is a world axis (either sign); nullopt otherwise.
+    std::optional<UpAxis> orbitAxis() const;
 
     /// Back to the scene file's camera (pose and focal length).
     void resetCamera();
