@@ -228,4 +228,40 @@ TEST_F(ViewerGui, UpZShowsNefertitiUpright) {
     EXPECT_NE(bad.out.find("--up w"), std::string::npos) << bad.out;
 }
 
+// At 800x600 the side bar narrows itself: the frame keeps at least 60 % of the window's area,
+// and the F1 help fits in the window whole (no scrolling), over the frame; the stats box stays
+// a small corner of the image.
+TEST_F(ViewerGui, At800x600TheFrameKeepsMostOfTheWindowAndTheHelpFits) {
+    REQUIRE_XDOTOOL();
+    const Outcome r = driveSteps("at 600 300; key F1; pause 0.5", "--size 800x600");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto state = readState(path("state.txt"));
+    const Rect view = rectOf(state, "view");
+    EXPECT_GE(static_cast<double>(view.w) * view.h, 0.6 * 800 * 600)
+        << state.at("view") << ", side bar " << state.at("window_sidebar");
+    EXPECT_EQ(state.at("help"), "1");
+    EXPECT_EQ(state.at("help_scrolls"), "0");
+    const Rect help = rectOf(state, "window_help");
+    EXPECT_GE(help.x, 0);
+    EXPECT_GE(help.y, 0);
+    EXPECT_LE(help.x + help.w, 800);
+    EXPECT_LE(help.y + help.h, 600);
+    const Rect stats = rectOf(state, "window_stats");
+    EXPECT_LE(static_cast<double>(stats.w) * stats.h, 0.05 * view.w * view.h);
+}
+
+// A window narrower than 640 pixels starts with the side bar collapsed to its strip; >> opens it.
+TEST_F(ViewerGui, ANarrowWindowStartsWithTheSideBarCollapsed) {
+    REQUIRE_XDOTOOL();
+    Outcome r = driveSteps("pause 0.3", "--size 500x400");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    auto state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("sidebar"), "collapsed");
+    EXPECT_GE(rectOf(state, "view").w, 460);
+    r = driveSteps("at 16 14; click 1; pause 0.3", "--size 500x400");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    state = readState(path("state.txt"));
+    EXPECT_EQ(state.at("sidebar"), "open");
+}
+
 }  // namespace

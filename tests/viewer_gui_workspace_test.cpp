@@ -216,13 +216,13 @@ TEST_F(ViewerGui, FFramesTheModelAndHomeGoesBack) {
 TEST_F(ViewerGui, TheSideBarResizesAndCollapsesAndTheFrameMakesRoom) {
     REQUIRE_XDOTOOL();
     // Its right edge dragged 120 pixels right.
-    Outcome r = driveSteps("drag 1 379 300 120 0 6", "--size 1000x500");
+    Outcome r = driveSteps("drag 1 379 300 120 0 6", "--size 1200x500");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("window_sidebar"), "0 0 500 500");
-    EXPECT_EQ(state.at("view"), "500 0 500 500");
+    EXPECT_EQ(state.at("view"), "500 0 700 500");
     // "<<" at the title row's right end: a strip, the frame beside it.
-    r = driveSteps("at 348 18; click 1", "--size 1000x500");
+    r = driveSteps("at 348 18; click 1", "--size 1200x500");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     state = readState(path("state.txt"));
     EXPECT_EQ(state.at("sidebar"), "collapsed");

@@ -276,3 +276,25 @@ TEST(UnsavedChanges, CameraLightMaterialAndSettingsCountAndSavingClearsThem) {
 }
 
 }  // namespace
+
+namespace {
+
+// The side bar narrows itself in a small window (the frame keeps most of it) and collapses
+// below kCollapseBelow; a large window gets the full width.
+TEST(Workspace, TheSideBarNarrowsInASmallWindow) {
+    EXPECT_EQ(autoSidebarWidth(1920, 1.0), kSidebarWidth);
+    EXPECT_EQ(autoSidebarWidth(1660, 1.0), kSidebarWidth);
+    EXPECT_EQ(autoSidebarWidth(3840, 2.0), 2 * kSidebarWidth);
+    EXPECT_EQ(autoSidebarWidth(800, 1.0), 272);
+    EXPECT_EQ(autoSidebarWidth(600, 1.0), kSidebarMinWidth);
+    // At 800x600 a frame that follows the window keeps 60 % of its area or more.
+    const Workspace w =
+        workspaceLayout(800, 600, autoSidebarWidth(800, 1.0), SidebarState::Open, 1.0);
+    EXPECT_GE(w.image.w * w.image.h, 0.6 * 800 * 600);
+    EXPECT_FALSE(autoCollapsed(800, 1.0));
+    EXPECT_TRUE(autoCollapsed(500, 1.0));
+    EXPECT_FALSE(autoCollapsed(1000, 1.5));
+    EXPECT_TRUE(autoCollapsed(900, 1.5));
+}
+
+}  // namespace

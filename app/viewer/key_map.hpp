@@ -6,7 +6,9 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace facet::view {
 
@@ -52,7 +54,17 @@ struct KeyBinding {
     std::string_view chars;  ///< printable characters that trigger it (ASCII)
     std::optional<NamedKey> named;
     std::optional<NamedKey> named2;
+    std::string_view group = {};  ///< the help's one row for a run of bindings (1 2 3: draw...)
 };
+
+/// One row of the help: keys and what they do (a group's bindings share a row).
+struct HelpRow {
+    std::string keys;
+    std::string what;
+};
+
+/// The help's key rows, in the table's order, groups merged ("1 2 3", "draw: solid, ...").
+std::vector<HelpRow> helpRows();
 
 /// The key table, in the order the help lists it.
 std::span<const KeyBinding> keyBindings();

@@ -39,11 +39,15 @@ enum class LightDrag {
 /// Side bar, overlays and the rest of the workspace between frames.
 struct WorkspaceUi {
     bool collapsed = false;       ///< the side bar is the thin strip (Tab hides it: UiState)
+    bool collapseChosen = false;  ///< << or >> was clicked: a narrow window no longer decides
+    bool sidebarDragged = false;  ///< the user set the width (its edge): no longer automatic
     int sidebarWidth = 0;         ///< pixels when open; 0 until the first frame sets the default
     bool sidebarSizeSet = false;  ///< the side bar's width must be (re)applied next frame
     float scale = 1.0f;           ///< UI scale: the monitor's content scale, or --ui-scale
     bool scaleChanged = false;    ///< the monitor's scale changed: rebuild fonts and style
     bool help = false;            ///< the keys and mouse overlay shows
+    glm::vec2 helpSize{0.0f};     ///< the help's size last frame
+    bool helpScrolls = false;     ///< the help did not fit the window (it scrolls)
     bool statsOverlay = true;     ///< the compact stats in the image's corner (S)
     bool lightMarker = true;      ///< the light's marker in the picture, when lighting is on (M)
     bool fullscreen = false;
@@ -57,7 +61,8 @@ struct WorkspaceUi {
     LightDrag lightDrag = LightDrag::None;
     std::string markerNote;  ///< the words beside an off-screen light's marker, this frame
     Workspace layout;        ///< this frame's side bar and image area
-    Backdrop backdrop;       ///< the side bar's background, left to GlFrame (empty: ImGui draws it)
+    SidebarState sidebarState = SidebarState::Open;  ///< this frame's (a narrow window collapses)
+    Backdrop backdrop;  ///< the side bar's background, left to GlFrame (empty: ImGui draws it)
     std::map<std::string, Rect> drawn;  ///< windows drawn this frame, by name (for --state)
 };
 
