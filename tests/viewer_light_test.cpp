@@ -239,7 +239,8 @@ TEST(CompareStats, ErrorsAverageOverThePixelsEitherSideCovers) {
 
 TEST(CompareStats, TheColourBarMatchesTheHeatMap) {
     EXPECT_EQ(heatTop(0, 37), 37);
-    EXPECT_EQ(heatTop(0, 0), 1);
+    EXPECT_EQ(heatTop(0, 0), kMinAutoHeat);
+    EXPECT_EQ(heatTop(0, 1), kMinAutoHeat);  // one 8-bit step: dark, not the brightest
     EXPECT_EQ(heatTop(64, 37), 64);
     EXPECT_EQ(heatColour(0.0, 37), glm::dvec3(0.0));
     // The heat map's pixel for an error of 20 with 37 brightest is the bar's colour at 20.

@@ -908,3 +908,18 @@ TEST(ViewerModels, TheUpAxisFramesOrbitsAndIsSavedWithTheScene) {
 }
 
 }  // namespace
+
+namespace {
+
+// The simple shader's see-through patchwork is explained where the shader is chosen.
+TEST(ViewerModels, TheSimpleShaderSaysItHasNoDepthTest) {
+    ViewerModel m;
+    ASSERT_FALSE(m.load(std::string(FACET_ASSETS_DIR) + "/default.scene"));
+    RenderSettings s = m.settings;
+    s.shader = ShaderKind::Simple;
+    EXPECT_NE(noEffectNote(m.scene, s).find("no depth test"), std::string::npos);
+    s.shader = ShaderKind::Painter;
+    EXPECT_EQ(noEffectNote(m.scene, s), "");
+}
+
+}  // namespace

@@ -298,3 +298,20 @@ TEST(Workspace, TheSideBarNarrowsInASmallWindow) {
 }
 
 }  // namespace
+
+namespace {
+
+// D without two pictures does nothing to the document (the window says why): it no longer
+// silently turns on difference mode for a later Compare.
+TEST(KeyMap, DWithoutComparisonChangesNothing) {
+    ViewerModel m;
+    ASSERT_FALSE(m.load(kDefaultScene));
+    CompareSettings compare;
+    EXPECT_FALSE(applyDocumentAction(Action::ToggleDifference, m, compare));
+    EXPECT_EQ(compare.display, CompareDisplay::Split);
+    EXPECT_TRUE(applyDocumentAction(Action::ToggleCompare, m, compare));
+    EXPECT_TRUE(applyDocumentAction(Action::ToggleDifference, m, compare));
+    EXPECT_EQ(compare.display, CompareDisplay::Difference);
+}
+
+}  // namespace

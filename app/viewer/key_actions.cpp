@@ -108,6 +108,11 @@ void applyActions(App& app) {
             case Action::ToggleStats:
                 w.statsOverlay = !w.statsOverlay;
                 break;
+            case Action::ToggleDifference:  // not applied: nothing is compared
+                showNotice(app,
+                           "D shows the difference of two pictures: turn on Compare (C) or "
+                           "side by side (G) first");
+                break;
             case Action::ToggleLightMarker:
                 w.lightMarker = !w.lightMarker;
                 break;

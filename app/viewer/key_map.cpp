@@ -166,6 +166,8 @@ bool applyDocumentAction(Action action, ViewerModel& model, CompareSettings& com
             setCompare(!compare.enabled, model.rendererChoice, compare);
             return true;
         case ToggleDifference:
+            // Only where two pictures are shown: elsewhere the window says how to get them.
+            if (!planFrame(model.rendererChoice, compare.enabled).twoSides()) return false;
             compare.display = compare.display == CompareDisplay::Split ? CompareDisplay::Difference
                                                                        : CompareDisplay::Split;
             return true;

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "framing.hpp"
@@ -17,8 +18,10 @@ void cameraPanel(App& app) {
     ViewerModel& m = app.model;
     Orbit& o = m.orbit;
     bool edited = false;
-    edited |= sliderDouble("yaw", o.yaw, -180.0, 180.0, "%.1f deg");
-    edited |= sliderDouble("pitch", o.pitch, -kMaxPitch, kMaxPitch, "%.1f deg");
+    // Angles that round to zero read "0.0", never "-0.0".
+    auto degrees = [](double v) { return std::abs(v) < 0.05 ? "0.0 deg" : "%.1f deg"; };
+    edited |= sliderDouble("yaw", o.yaw, -180.0, 180.0, degrees(o.yaw));
+    edited |= sliderDouble("pitch", o.pitch, -kMaxPitch, kMaxPitch, degrees(o.pitch));
     edited |= sliderDouble("distance", o.distance, o.minDistance, o.maxDistance, "%.4g", true);
     edited |= dragDouble3("look-at", &o.target.x, std::max(1e-6, o.distance * 0.005), "%.3f");
     if (edited) m.orbitEdited();

@@ -8,6 +8,9 @@ void lightingChosen(RenderSettings& settings) {
 }
 
 std::string noEffectNote(const Scene& scene, const RenderSettings& settings) {
+    if (settings.shader == ShaderKind::Simple && settings.mode == DrawMode::Solid)
+        return "The simple shader has no depth test: farther triangles drawn later cover nearer "
+               "ones (the see-through patchwork). Try the painter shader, or cull back faces.";
     if (settings.shader != ShaderKind::Texture) return {};
     if (!scene.texture)
         return "The scene has no texture: the texture shader samples white. Load an image in "
