@@ -91,6 +91,7 @@ void dragLightStep(App& app) {
 
 void drawLightMarker(App& app) {
     app.work.markerNote.clear();
+    app.work.markerNoteRect = {};
     if (!lightMarkerShown(app)) return;
     const LightMarker m = marker(app);
     const Camera& c = app.model.scene.camera;
@@ -129,6 +130,9 @@ void drawLightMarker(App& app) {
                             ImVec2(at.x + size.x + 3.0f * s, at.y + size.y + 1.0f * s),
                             IM_COL32(0, 0, 0, 170), 3.0f * s);
         draw->AddText(at, fill, app.work.markerNote.c_str());
+        app.work.markerNoteRect = {
+            static_cast<int>(at.x - 3.0f * s) - 1, static_cast<int>(at.y - 1.0f * s) - 1,
+            static_cast<int>(size.x + 6.0f * s) + 3, static_cast<int>(size.y + 2.0f * s) + 3};
     } else if (m.directional && m.aimVisible) {
         // The way the light travels: from the handle to the look-at point, head at the end.
         const ImVec2 a = toWindow(app, m.aim);

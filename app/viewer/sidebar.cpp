@@ -26,8 +26,8 @@ SidebarState sidebarState(const App& app) {
     if (!app.ui.showPanels) return SidebarState::Hidden;
     const WorkspaceUi& w = app.work;
     // A narrow window starts with the strip, until << or >> says otherwise.
-    const bool collapsed =
-        w.collapseChosen ? w.collapsed : autoCollapsed(app.fbWidth, w.scale) || w.collapsed;
+    const bool narrow = !w.keepSidebar && autoCollapsed(app.fbWidth, w.scale);
+    const bool collapsed = w.collapseChosen ? w.collapsed : narrow || w.collapsed;
     return collapsed ? SidebarState::Collapsed : SidebarState::Open;
 }
 
@@ -283,7 +283,11 @@ void noteWindow(App& app, const char* name) {
 void placeFrame(App& app) {
     WorkspaceUi& w = app.work;
     if (w.sidebarWidth <= 0) w.sidebarWidth = static_cast<int>(kSidebarWidth * w.scale + 0.5f);
-    const int width = w.sidebarDragged ? w.sidebarWidth : autoSidebarWidth(app.fbWidth, w.scale);
+    if (w.keepWidthAt < 0) w.keepWidthAt = app.fbWidth;
+    if (w.keepWidthAt > 0 && app.fbWidth != w.keepWidthAt) w.keepWidthAt = 0;  // resized
+    w.keepSidebar = w.keepWidthAt > 0;
+    const int width =
+        w.sidebarDragged || w.keepSidebar ? w.sidebarWidth : autoSidebarWidth(app.fbWidth, w.scale);
     w.sidebarState = sidebarState(app);
     w.layout = workspaceLayout(app.fbWidth, app.fbHeight, width, w.sidebarState, w.scale);
     const Rect& image = w.layout.image;

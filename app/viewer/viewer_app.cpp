@@ -287,6 +287,8 @@ int App::run() {
     }
     work.scale = windowUiScale(*this);
     work.sidebarWidth = static_cast<int>(kSidebarWidth * work.scale + 0.5f);
+    // A window sized for the scene beside the full side bar keeps that layout until resized.
+    if (options.width <= 0 || options.height <= 0) work.keepWidthAt = -1;
     int width = 0, height = 0;
     initialWindowSize(options, model.sceneCamera, window, ui.showPanels ? work.sidebarWidth : 0,
                       width, height);

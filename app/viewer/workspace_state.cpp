@@ -60,6 +60,7 @@ std::string workspaceStateText(const App& app) {
                   markerInFrame(m, c.width, c.height) ? 1 : 0);
     s << "light_marker " << marker << "\n";
     s << "light_marker_note " << w.markerNote << "\n";
+    s << "light_marker_note_rect " << rect(w.markerNoteRect) << "\n";
     return s.str();
 }
 

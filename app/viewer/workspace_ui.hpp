@@ -41,6 +41,11 @@ struct WorkspaceUi {
     bool collapsed = false;       ///< the side bar is the thin strip (Tab hides it: UiState)
     bool collapseChosen = false;  ///< << or >> was clicked: a narrow window no longer decides
     bool sidebarDragged = false;  ///< the user set the width (its edge): no longer automatic
+    /// The framebuffer width the window opened with when the viewer sized it for the scene
+    /// beside the full side bar (−1: the first frame sets it; 0: none, or resized since): at
+    /// that width the side bar keeps its full width and stays open.
+    int keepWidthAt = 0;
+    bool keepSidebar = false;     ///< this frame: the opening layout is kept (keepWidthAt)
     int sidebarWidth = 0;         ///< pixels when open; 0 until the first frame sets the default
     bool sidebarSizeSet = false;  ///< the side bar's width must be (re)applied next frame
     float scale = 1.0f;           ///< UI scale: the monitor's content scale, or --ui-scale
@@ -60,6 +65,7 @@ struct WorkspaceUi {
     Notice notice;
     LightDrag lightDrag = LightDrag::None;
     std::string markerNote;  ///< the words beside an off-screen light's marker, this frame
+    Rect markerNoteRect;     ///< where they are drawn (window pixels), empty when none
     Workspace layout;        ///< this frame's side bar and image area
     SidebarState sidebarState = SidebarState::Open;  ///< this frame's (a narrow window collapses)
     Backdrop backdrop;  ///< the side bar's background, left to GlFrame (empty: ImGui draws it)
