@@ -5,7 +5,7 @@
 #   viewer_drive.sh SCENARIO OUTDIR VIEWER [VIEWER ARGS...]
 #
 # The viewer starts in OUTDIR with --state state.txt --screenshot frame.png; SCENARIO says what
-# to do with the window (all coordinates relative to it), then Escape closes it:
+# to do with the window (all coordinates relative to it), then SIGTERM ends it (see the end):
 #   none    nothing
 #   orbit   left drag across the image, then three wheel turns towards the scene
 #   panel   left drag that starts on the side bar's title row
@@ -16,13 +16,12 @@
 #   renderers  press G four times, a second apart: CPU engine → OpenGL twin → side by side →
 #           CPU engine → OpenGL twin
 #   combo   open the Render panel's renderer combo and click its second entry (OpenGL twin)
-#   save    left drag across the image (orbit), then Ctrl+S (Save scene to the Scene panel's path)
+#   save    left drag across the image (orbit), then Ctrl+S; in the save dialog the path
+#           $FACET_DRIVE_SAVE_AS (when set) and Enter
 #   steps   run $FACET_DRIVE_STEPS, ';'-separated commands of this script: drag B X Y DX DY N,
 #           ctrldrag X Y DX DY N, key KEY..., at X Y (move the pointer), click B, shiftclick X Y
-#           (Shift + left click), pause SECONDS
+#           (Shift + left click), press X Y (move and left click at once), pause SECONDS
 # FACET_DRIVE_SETTLE sets the wait before the scenario (1 s by default).
-# With FACET_DRIVE_QUIT=term the viewer is stopped with SIGTERM instead of Escape (so a last
-# --window-shot still shows what Escape would close, the help for one).
 set -u
 scenario=$1
 out=$2
@@ -79,12 +78,27 @@ shiftclick() {  # x y: left click with Shift held (the pixel inspector)
   sleep 0.5
 }
 pause() { sleep "$1"; }
+press() {  # x y: move there and click at once, in one xdotool call (often within one frame)
+  xdotool mousemove --window "$wid" "$1" "$2" mousedown 1 mouseup 1
+  sleep 0.5
+}
 
 case "$scenario" in
   none) ;;
   save)
     drag 1 800 450 150 -40 6
     xdotool key --window "$wid" ctrl+s
+    sleep 0.7
+    # The first save asks where: the path field has the focus; FACET_DRIVE_SAVE_AS replaces it.
+    if [ -n "${FACET_DRIVE_SAVE_AS:-}" ]; then
+      xdotool key ctrl+a
+      xdotool type --delay 10 "$FACET_DRIVE_SAVE_AS"
+      sleep 0.3
+    fi
+    # Held for a frame: ImGui sees keys by their state once a frame, not by their events.
+    xdotool keydown Return
+    sleep 0.15
+    xdotool keyup Return
     sleep 1
     ;;
   orbit)
@@ -114,16 +128,17 @@ case "$scenario" in
 esac
 
 sleep 0.5
-if [ "${FACET_DRIVE_QUIT:-}" = term ]; then
-  kill -TERM "$pid"
-else
-  xdotool mousemove --window "$wid" 800 450 key Escape
-fi
-# Escape should end it within a second; SIGTERM also makes it write its outputs.
+# Esc never quits (it closes the innermost thing); Ctrl+Q asks first when the scene changed.
+# So the run ends with SIGTERM, which finishes the frame and writes the outputs, unless
+# FACET_DRIVE_QUIT=wait: then the scenario itself quit (Ctrl+Q) and the viewer must end alone.
+case "${FACET_DRIVE_QUIT:-term}" in
+  wait) ;;
+  *) kill -TERM "$pid" ;;
+esac
 i=0
 while kill -0 "$pid" 2>/dev/null && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 if kill -0 "$pid" 2>/dev/null; then
-  echo "viewer_drive: Escape did not close the viewer; sending SIGTERM" >&2
+  echo "viewer_drive: the viewer was still running; sending SIGTERM"
   kill -TERM "$pid"
 fi
 wait "$pid"

@@ -20,7 +20,7 @@ using namespace viewer_gui;
 // Starts the viewer in the Compare panel (so the layout is fixed: Measure at (57, 458) of the
 // window, in the side bar), clicks Measure, waits up to 40 s for "accuracy measured" on its
 // stdout, clicks the table's third row (subdivided:16) in the table's own window at the image
-// area's bottom left, then closes it with Escape.
+// area's bottom left, then ends it with SIGTERM (which writes the outputs).
 const char* const kScript = R"(set -u
 cd "$1" || exit 1
 shift
@@ -40,7 +40,7 @@ while ! grep -q "accuracy measured" viewer.log && [ "$i" -lt 400 ]; do sleep 0.1
 sleep 0.5
 xdotool mousemove --window "$wid" 508 468 click 1
 sleep 0.5
-xdotool mousemove --window "$wid" 900 450 key Escape
+kill -TERM "$pid"
 i=0
 while kill -0 "$pid" 2>/dev/null && [ "$i" -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 kill -0 "$pid" 2>/dev/null && kill -TERM "$pid"

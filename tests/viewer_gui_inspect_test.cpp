@@ -31,7 +31,7 @@ TEST_F(ViewerGui, ShiftClickInspectsThePixelUnderThePointer) {
     const int px = 700, py = 330;
     const Outcome r =
         driveSteps("shiftclick " + std::to_string(kFrameX + px) + " " + std::to_string(py),
-                   "--size " + kWindow1280 + " --window-shot window.png", true);
+                   "--size " + kWindow1280 + " --window-shot window.png");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     std::ifstream log(path("viewer.log"));
     std::stringstream printedStream;

@@ -151,12 +151,14 @@ class ViewerGui : public ::testing::Test {
                    " " + scenario + " " + dir.string() + " " + kViewer + " --no-vsync " + args);
     }
 
-    /// Drives the viewer through `steps` (viewer_drive.sh's commands, ';'-separated); `term`
-    /// stops it with SIGTERM instead of Escape.
-    Outcome driveSteps(const std::string& steps, const std::string& args, bool term = false,
+    /// Drives the viewer through `steps` (viewer_drive.sh's commands, ';'-separated), then
+    /// stops it with SIGTERM; with `selfQuit` the steps quit it (Ctrl+Q) and it must end alone
+    /// (else the output says "still running").
+    Outcome driveSteps(const std::string& steps, const std::string& args, bool selfQuit = false,
                        const std::string& env = "") {
         return drive("steps", args,
-                     "FACET_DRIVE_STEPS='" + steps + "'" + (term ? " FACET_DRIVE_QUIT=term" : "") +
+                     "FACET_DRIVE_STEPS='" + steps + "'" +
+                         (selfQuit ? " FACET_DRIVE_QUIT=wait" : "") +
                          (env.empty() ? "" : " " + env));
     }
 };

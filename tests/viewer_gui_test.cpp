@@ -110,17 +110,18 @@ TEST_F(ViewerGui, KeepingTheSceneSizeLetterboxesTheFrame) {
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("size"), "1280 720");
-    EXPECT_EQ(state.at("view"), "380 60 640 360");
+    // The side bar narrowed to a third of the 1020-pixel window (346): 1280x720 fits the
+    // 674x480 image area as 674x379 with 50-pixel bars above and below.
+    EXPECT_EQ(state.at("view"), "346 50 674 379");
     const Framebuffer window = readPng(path("window.png"));
     ASSERT_EQ(window.width, 1020);
     ASSERT_EQ(window.height, 480);
-    // 1280x720 fits the 640x480 image area as 640x360 with 60-pixel bars above and below.
-    const int x = kFrameX + 600;
+    const int x = 346 + 600;
     const std::uint32_t bar = window.color[window.index(x, 470)];
     EXPECT_EQ(bar & 0xFFFFFFu, 0x141414u);
     EXPECT_NE(window.color[window.index(x, 400)], bar);  // the frame's background
-    EXPECT_EQ(window.color[window.index(x, 419)], window.color[window.index(x, 400)]);
-    EXPECT_EQ(window.color[window.index(x, 420)], bar);
+    EXPECT_EQ(window.color[window.index(x, 428)], window.color[window.index(x, 400)]);
+    EXPECT_EQ(window.color[window.index(x, 429)], bar);
     // Letterboxed, the side bar's background is a clear of its own, in ImGui's WindowBg.
     for (int y = 100; y < 480; y += 100)
         EXPECT_EQ(window.color[window.index(2, y)] & 0xFFFFFFu, 0x0F0F0Fu) << y;
@@ -196,12 +197,13 @@ TEST_F(ViewerGui, TheFrameFollowsAResizedWindowWithTheSameFraming) {
     REQUIRE_XDOTOOL();
     const Outcome r = drive("resize");
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    // 800x600 less the side bar: a 420x600 frame, the same vertical field of view.
+    // 800x600 less the side bar (narrowed to 272): a 528x600 frame, the same vertical field of
+    // view.
     const auto state = readState(path("state.txt"));
-    EXPECT_EQ(state.at("size"), "420 600");
+    EXPECT_EQ(state.at("size"), "528 600");
     EXPECT_NEAR(number(state, "frame_focal"), 1100.0 * 600.0 / 720.0, 1e-9);
     const Framebuffer frame = readPng(path("frame.png"));
-    EXPECT_EQ(frame.width, 420);
+    EXPECT_EQ(frame.width, 528);
     EXPECT_EQ(frame.height, 600);
     // The stats box followed the window's right edge.
     const Rect stats = rectOf(state, "window_stats");
@@ -229,7 +231,8 @@ TEST_F(ViewerGui, CtrlSSavesABareModelAfterOrbitingAsASceneThatRendersTheFrame) 
     REQUIRE_XDOTOOL();
     const std::string teapot = std::string(FACET_SHARED_DIR) + "/data/models/teapot.obj";
     REQUIRE_SHARED_DATA(teapot);
-    const Outcome r = drive("save", "--size " + kWindow1280 + " " + teapot);
+    const Outcome r = drive("save", "--size " + kWindow1280 + " " + teapot,
+                            "FACET_DRIVE_SAVE_AS=" + path("teapot.scene"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
     ASSERT_TRUE(fs::exists(path("teapot.scene"))) << r.out;
     const auto state = readState(path("state.txt"));
@@ -268,7 +271,7 @@ TEST_F(ViewerGui, ALargeModelShowsItsProgressAndCancelKeepsTheSceneShown) {
     // Stopped (SIGTERM) while it reads.
     Outcome r =
         driveSteps("pause 0.3", "--size " + kWindow1280 + " --window-shot window.png " + big,
-                   /*term=*/true, soon);
+                   /*selfQuit=*/false, soon);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     auto state = readState(path("state.txt"));
     EXPECT_EQ(fs::path(state.at("scene")).filename(), "default.scene");
@@ -293,7 +296,7 @@ TEST_F(ViewerGui, ALargeModelShowsItsProgressAndCancelKeepsTheSceneShown) {
     // Cancel clicked: no load in flight, the default scene still shown, no error.
     r = driveSteps("at " + std::to_string(cancel.x + cancel.w / 2) + " " +
                        std::to_string(cancel.y + cancel.h / 2) + "; click 1; pause 0.5",
-                   "--size " + kWindow1280 + " " + big, /*term=*/false, soon);
+                   "--size " + kWindow1280 + " " + big, /*selfQuit=*/false, soon);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     state = readState(path("state.txt"));
     loading(state, running, fraction);

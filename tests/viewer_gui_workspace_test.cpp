@@ -108,6 +108,7 @@ TEST_P(OpeningLayout, NoPanelPixelCoversTheFrame) {
     double markerX = 0.0, markerY = 0.0;
     std::istringstream(state.at("light_marker")) >> markerShown >> markerX >> markerY >>
         markerInside;
+    const Rect note = rectOf(state, "light_marker_note_rect");
     std::size_t differ = 0;
     for (int y = 0; y < view.h; ++y)
         for (int x = 0; x < view.w; ++x) {
@@ -115,6 +116,8 @@ TEST_P(OpeningLayout, NoPanelPixelCoversTheFrame) {
             if (wx >= stats.x && wx < stats.x + stats.w && wy >= stats.y && wy < stats.y + stats.h)
                 continue;
             if (markerShown && std::hypot(wx - markerX, wy - markerY) <= 28.0) continue;
+            if (wx >= note.x && wx < note.x + note.w && wy >= note.y && wy < note.y + note.h)
+                continue;  // "light off screen" beside a marker on the border
             differ +=
                 pixelError(window.color[window.index(wx, wy)], frame.color[frame.index(x, y)]) > 0;
         }
@@ -147,7 +150,7 @@ TEST_F(ViewerGui, F1AndQuestionMarkOpenTheHelpOverTheImage) {
     for (const char* key : {"F1", "question"}) {
         SCOPED_TRACE(key);
         const Outcome r = driveSteps(std::string("at 800 400; key ") + key + "; pause 0.5",
-                                     "--size " + kWindow1280 + " --window-shot window.png", true);
+                                     "--size " + kWindow1280 + " --window-shot window.png");
         ASSERT_EQ(r.exitCode, 0) << r.out;
         const auto state = readState(path("state.txt"));
         EXPECT_EQ(state.at("help"), "1");
@@ -216,13 +219,13 @@ TEST_F(ViewerGui, FFramesTheModelAndHomeGoesBack) {
 TEST_F(ViewerGui, TheSideBarResizesAndCollapsesAndTheFrameMakesRoom) {
     REQUIRE_XDOTOOL();
     // Its right edge dragged 120 pixels right.
-    Outcome r = driveSteps("drag 1 379 300 120 0 6", "--size 1000x500");
+    Outcome r = driveSteps("drag 1 379 300 120 0 6", "--size 1200x500");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("window_sidebar"), "0 0 500 500");
-    EXPECT_EQ(state.at("view"), "500 0 500 500");
+    EXPECT_EQ(state.at("view"), "500 0 700 500");
     // "<<" at the title row's right end: a strip, the frame beside it.
-    r = driveSteps("at 348 18; click 1", "--size 1000x500");
+    r = driveSteps("at 348 18; click 1", "--size 1200x500");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     state = readState(path("state.txt"));
     EXPECT_EQ(state.at("sidebar"), "collapsed");
@@ -295,8 +298,10 @@ TEST_F(ViewerGui, DraggingTheLightMarkerMovesTheLight) {
     std::istringstream tin(state.at("target"));
     glm::dvec3 t;
     tin >> t.x >> t.y >> t.z;
-    EXPECT_NEAR(glm::length(lightOf(state.at("light")) - t),
-                glm::length(lightOf(start.at("light")) - t), 1e-6);
+    // No farther than it was (a light beyond 0.9 of the camera's distance comes nearer, so it
+    // stays on the side the camera sees: light_marker.hpp).
+    EXPECT_LE(glm::length(lightOf(state.at("light")) - t),
+              glm::length(lightOf(start.at("light")) - t) + 1e-6);
     // And the picture's lighting changed with it.
     EXPECT_GT(diffImages(readPng(path("frame.png")), readPng(path("start.png"))).pixelsDiffering,
               1000u);
@@ -316,7 +321,7 @@ TEST_F(ViewerGui, TheScreenshotLandsInThePicturesFolderAndItsPathIsShown) {
     REQUIRE_XDOTOOL();
     const std::string pictures = path("pics");
     const Outcome r = driveSteps("at 800 400; key p; pause 0.3",
-                                 "--size " + kWindow1280 + " --window-shot window.png", true,
+                                 "--size " + kWindow1280 + " --window-shot window.png", false,
                                  "XDG_PICTURES_DIR=" + pictures);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const std::string saved = pictures + "/facet/facet-frame-0001.png";
@@ -354,12 +359,13 @@ TEST_F(ViewerGui, FontsAndTheSideBarFollowTheMonitorsContentScale) {
                   "exec \"$@\"\n";
     }
     const Outcome r = run("cd " + dir.string() +
-                          " && timeout 60 xvfb-run -a -s '-screen 0 1920x1080x24 -noreset' sh "
+                          " && timeout 60 xvfb-run -a -s '-screen 0 2400x1080x24 -noreset' sh "
                           "dpi.sh " +
-                          kViewer + " --frames 3 --no-vsync --size 1600x800 --state state.txt");
+                          kViewer + " --frames 3 --no-vsync --size 2300x800 --state state.txt");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const auto state = readState(path("state.txt"));
     EXPECT_EQ(state.at("ui_scale"), "2.000");
+    // (A window wide enough that the side bar keeps its full width: kSidebarShare.)
     const Rect sidebar = rectOf(state, "window_sidebar");
     EXPECT_EQ(sidebar.w, 2 * kFrameX);
     EXPECT_EQ(rectOf(state, "view").x, 2 * kFrameX);

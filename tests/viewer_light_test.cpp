@@ -68,6 +68,27 @@ TEST(LightMarker, ADirectionalLightGetsAHandleTowardsItAndAnArrowToTheTarget) {
     EXPECT_NEAR(m.aim.y, 240.0, 1e-9);
 }
 
+// The case: the light farther from the look-at point than the camera (the ray through
+// the pointer met its sphere only behind the model, and the model went dark). Dragged across
+// the centre, it stays on the camera's side: n·l > 0 at the target for the normal facing the
+// camera, and it never gets farther than kDragSphere × the camera's distance.
+TEST(LightMarker, ADraggedLightStaysOnTheSideTheCameraSees) {
+    const Camera c = testCamera();  // eye at distance 5 from the target
+    const glm::dvec3 target(0.0);
+    const glm::dvec3 facing = glm::normalize(c.eye - target);
+    for (const glm::dvec4 start : {glm::dvec4(3.0, 4.0, -3.0, 1.0), glm::dvec4(0.0, 9.0, 9.0, 1.0),
+                                   glm::dvec4(-5.2, -0.8, 2.2, 1.0)}) {
+        glm::dvec4 light = start;
+        for (int i = 0; i <= 20; ++i) {  // from the top border down across the centre
+            const glm::dvec2 pointer(300.0 + 2.0 * i, 10.0 + 23.0 * i);
+            light = dragLight(c, light, target, 5.0, pointer);
+            const glm::dvec3 l = glm::dvec3(light) / light.w - target;
+            EXPECT_GT(glm::dot(facing, l), 0.0) << i;
+            EXPECT_LE(glm::length(l), kDragSphere * 5.0 + 1e-9) << i;
+        }
+    }
+}
+
 TEST(LightMarker, DraggingPutsTheLightUnderThePointerAtTheSameDistance) {
     const Camera c = testCamera();
     const glm::dvec3 target(0.0);
@@ -81,9 +102,9 @@ TEST(LightMarker, DraggingPutsTheLightUnderThePointerAtTheSameDistance) {
         EXPECT_NEAR(p.y, pointer.y, 1e-6);
         EXPECT_GT(moved.z, 0.0);  // stayed on the near side, where it was
     }
-    // Behind the target, it stays behind.
+    // Behind the target, it comes to the side the camera sees (the near point under the pointer).
     const glm::dvec4 back = dragLight(c, glm::dvec4(0.0, 0.0, -2.0, 1.0), target, 5.0, {380, 240});
-    EXPECT_LT(back.z, 0.0);
+    EXPECT_GT(back.z, 0.0);
     EXPECT_NEAR(projectToPixel(c, glm::dvec3(back)).x, 380.0, 1e-6);
     // Far outside the sphere's outline: on the outline, the distance kept.
     const glm::dvec4 edge = dragLight(c, light, target, 5.0, {5000.0, 240.0});
@@ -218,7 +239,8 @@ TEST(CompareStats, ErrorsAverageOverThePixelsEitherSideCovers) {
 
 TEST(CompareStats, TheColourBarMatchesTheHeatMap) {
     EXPECT_EQ(heatTop(0, 37), 37);
-    EXPECT_EQ(heatTop(0, 0), 1);
+    EXPECT_EQ(heatTop(0, 0), kMinAutoHeat);
+    EXPECT_EQ(heatTop(0, 1), kMinAutoHeat);  // one 8-bit step: dark, not the brightest
     EXPECT_EQ(heatTop(64, 37), 64);
     EXPECT_EQ(heatColour(0.0, 37), glm::dvec3(0.0));
     // The heat map's pixel for an error of 20 with 37 brightest is the bar's colour at 20.

@@ -20,6 +20,7 @@
 
 #include "facet/camera.hpp"
 #include "facet/render.hpp"
+#include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 #include "file_list.hpp"
@@ -650,7 +651,7 @@ TEST(ViewerModels, SavedAfterOrbitingTheFrameRendersByteForByte) {
         m.prepareFrame(800, 500);  // the window's size, not the scene's
         const Framebuffer shown = m.render();
         const std::string saved = (dir / (fs::path(file).stem().string() + ".scene")).string();
-        ASSERT_FALSE(m.saveScene(saved));
+        ASSERT_FALSE(m.saveScene(saved, /*windowSize=*/true));
         EXPECT_EQ(m.recent.front(), fs::absolute(saved).lexically_normal().string());
 
         Result<Scene> back = loadScene(saved);
@@ -660,6 +661,19 @@ TEST(ViewerModels, SavedAfterOrbitingTheFrameRendersByteForByte) {
         Framebuffer again;
         renderer.render(*back, m.settings, again);
         EXPECT_EQ(again.color, shown.color) << file;
+
+        // By default the scene keeps its own image size, with the view shown: it renders what
+        // the viewer draws at that size (--keep-scene-size).
+        ASSERT_FALSE(m.saveScene(saved));
+        back = loadScene(saved);
+        ASSERT_TRUE(back) << back.error().what();
+        EXPECT_EQ(back->camera.width, m.sceneCamera.width);
+        EXPECT_EQ(back->camera.height, m.sceneCamera.height);
+        m.sizePolicy = SizePolicy::SceneSize;
+        m.prepareFrame(800, 500);
+        const Framebuffer atSceneSize = m.render();
+        renderer.render(*back, m.settings, again);
+        EXPECT_EQ(again.color, atSceneSize.color) << file;
     }
     fs::remove_all(dir);
 }
@@ -754,7 +768,7 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     const std::size_t before = m.scene.mesh->triangleCount();
 
     LoadJob job;
-    job.start(nefertiti, 640, 360);
+    job.start(nefertiti, OpenOptions{640, 360});
     EXPECT_TRUE(job.running());
     // start() returns before the 100k-triangle file is read: the caller's frames go on.
     EXPECT_FALSE(job.take().has_value());
@@ -772,7 +786,7 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     EXPECT_FALSE(job.take().has_value());
     EXPECT_EQ(m.scene.mesh->triangleCount(), before);
 
-    job.start(nefertiti, 640, 360);
+    job.start(nefertiti, OpenOptions{640, 360});
     std::optional<Result<LoadedScene>> done;
     std::vector<float> bar;  // what the loading window showed, frame by frame
     for (int i = 0; i < 6000 && !done; ++i) {
@@ -789,7 +803,7 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     m.adopt(std::move(*done).value());
     EXPECT_GT(m.scene.mesh->triangleCount(), 99000u);
 
-    job.start("/no/such/file.obj", 640, 360);
+    job.start("/no/such/file.obj", OpenOptions{640, 360});
     for (int i = 0; i < 500 && !done; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
     done.reset();
@@ -803,15 +817,113 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     EXPECT_GT(m.scene.mesh->triangleCount(), 99000u);  // a failure changes nothing
 }
 
-TEST(ViewerModels, TheDefaultSavePathIsAFreeNameInTheCurrentFolder) {
-    EXPECT_EQ(defaultSavePath("/somewhere/read-only/teapot.obj"), "teapot.scene");
+TEST(ViewerModels, TheDefaultSavePathIsAFreeNameInTheOpenedFilesFolder) {
+    EXPECT_EQ(defaultSavePath("/somewhere/read-only/teapot.obj"),
+              "/somewhere/read-only/teapot.scene");
     const fs::path dir = scratchFolder();
+    std::ofstream(dir / "teapot.scene") << "x";
+    EXPECT_EQ(defaultSavePath((dir / "teapot.obj").string()), (dir / "teapot-0001.scene").string());
+    // A relative name is made absolute: the save never lands silently in the working folder.
     const fs::path old = fs::current_path();
     fs::current_path(dir);
-    std::ofstream("teapot.scene") << "x";
-    EXPECT_EQ(defaultSavePath("/x/teapot.obj"), "teapot-0001.scene");
+    EXPECT_EQ(defaultSavePath("teapot.obj"), (dir / "teapot-0001.scene").string());
     fs::current_path(old);
     fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// Conventions §9 by every route: a texture chosen in the browser, dropped, typed in the Texture
+// panel or given as --texture all go through ViewerModel::loadTexture, which picks the settings
+// that show it whatever was set before: the course's coloured wall shows the texel alone.
+TEST(ViewerModels, ATextureByAnyRouteOpensWithTheSameSettings) {
+    const std::string course = std::string(FACET_SHARED_DIR) + "/data/course/";
+    REQUIRE_SHARED_DATA(course + "textured_facet.off");
+    Framebuffer first;
+    for (const ShaderKind before : {ShaderKind::Depth, ShaderKind::Painter, ShaderKind::Texture}) {
+        ViewerModel m;
+        ASSERT_FALSE(m.load(course + "textured_facet.off"));
+        m.settings.shader = before;
+        m.settings.combine = true;
+        m.settings.lighting = Lighting::Phong;
+        ASSERT_FALSE(m.loadTexture(course + "brick.jpg"));
+        RenderSettings expected = m.settings;
+        applyOpeningSettings(m.scene, expected);
+        EXPECT_EQ(m.settings, expected);
+        EXPECT_EQ(m.settings.shader, ShaderKind::Texture);
+        m.prepareFrame(640, 480);
+        const Framebuffer& f = m.render();
+        if (first.color.empty())
+            first = f;
+        else
+            EXPECT_EQ(f.color, first.color);
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// Conventions §3b in the viewer: the up axis frames a bare mesh as --up does, is the axis the
+// orbit turns about, and a saved scene carries it (its camera's up vector).
+TEST(ViewerModels, TheUpAxisFramesOrbitsAndIsSavedWithTheScene) {
+    const std::string cow = kModels + "/cow.obj";
+    REQUIRE_SHARED_DATA(cow);
+    ViewerModel opened;
+    opened.up = UpAxis::Z;
+    ASSERT_FALSE(opened.load(cow));
+    EXPECT_EQ(opened.orbitAxis(), UpAxis::Z);
+    ViewerModel chosen;
+    ASSERT_FALSE(chosen.load(cow));
+    EXPECT_EQ(chosen.orbitAxis(), UpAxis::Y);
+    chosen.setUpAxis(UpAxis::Z);  // the Camera panel's choice: the same as opening with it
+    EXPECT_EQ(chosen.sceneCamera, opened.sceneCamera);
+    EXPECT_EQ(chosen.orbitAxis(), UpAxis::Z);
+
+    // Orbiting turns about Z: the eye's height along Z stays.
+    chosen.rotate(120.0, 0.0);
+    const Camera& turned = chosen.prepareFrame(1280, 720);
+    EXPECT_NEAR(turned.eye.z - turned.look.z, opened.sceneCamera.eye.z - opened.sceneCamera.look.z,
+                1e-9);
+    EXPECT_NE(turned.eye.x, opened.sceneCamera.eye.x);
+
+    // Saved and opened again (with the default Y): still Z up.
+    const fs::path dir = scratchFolder();
+    const std::string saved = (dir / "cow_z.scene").string();
+    ASSERT_FALSE(chosen.saveScene(saved));
+    ViewerModel back;
+    ASSERT_FALSE(back.load(saved));
+    EXPECT_EQ(back.orbitAxis(), UpAxis::Z);
+
+    // A .scene keeps the view shown when the axis changes; the orbit measures from the new one.
+    ViewerModel scene;
+    ASSERT_FALSE(scene.load(saved));
+    const Camera before = scene.prepareFrame(1280, 720);
+    scene.setUpAxis(UpAxis::Y);
+    EXPECT_EQ(scene.orbitAxis(), UpAxis::Y);
+    const Camera after = scene.prepareFrame(1280, 720);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(after.eye[i], before.eye[i], 1e-9);
+        EXPECT_NEAR(after.look[i], before.look[i], 1e-9);
+    }
+    fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// The simple shader's see-through patchwork is explained where the shader is chosen.
+TEST(ViewerModels, TheSimpleShaderSaysItHasNoDepthTest) {
+    ViewerModel m;
+    ASSERT_FALSE(m.load(std::string(FACET_ASSETS_DIR) + "/default.scene"));
+    RenderSettings s = m.settings;
+    s.shader = ShaderKind::Simple;
+    EXPECT_NE(noEffectNote(m.scene, s).find("no depth test"), std::string::npos);
+    s.shader = ShaderKind::Painter;
+    EXPECT_EQ(noEffectNote(m.scene, s), "");
 }
 
 }  // namespace

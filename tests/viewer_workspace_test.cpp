@@ -167,8 +167,8 @@ TEST(KeyMap, DocumentActionsChangeTheDocumentAndTheOthersAreLeftToTheWindow) {
     EXPECT_TRUE(m.orbitMoved);
     EXPECT_TRUE(applyDocumentAction(Action::ResetCamera, m, compare));
     EXPECT_FALSE(m.orbitMoved);
-    for (const Action a : {Action::Help, Action::Quit, Action::Fullscreen, Action::Screenshot,
-                           Action::TogglePanels, Action::ToggleStats})
+    for (const Action a : {Action::Help, Action::Back, Action::Quit, Action::Fullscreen,
+                           Action::Screenshot, Action::TogglePanels, Action::ToggleStats})
         EXPECT_FALSE(applyDocumentAction(a, m, compare));
 }
 
@@ -225,6 +225,93 @@ TEST(ScreenshotFolder, IsCreatedOnDemandAndAFileInTheWayIsAnError) {
     ASSERT_TRUE(error);
     EXPECT_NE(error->what().find(blocked), std::string::npos) << error->what();
     fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// Esc closes one thing, the innermost, and has nothing to do (never quits) when all is closed.
+TEST(EscKey, ClosesTheInnermostOpenThingAndNeverQuits) {
+    using facet::view::EscTarget;
+    using facet::view::OpenThings;
+    EXPECT_EQ(escTarget(OpenThings{}), EscTarget::None);
+    EXPECT_EQ(escTarget(OpenThings{true, true, true, true, true}), EscTarget::Popup);
+    EXPECT_EQ(escTarget(OpenThings{false, true, true, true, true}), EscTarget::Inspector);
+    EXPECT_EQ(escTarget(OpenThings{false, false, true, true, true}), EscTarget::MeasureTable);
+    EXPECT_EQ(escTarget(OpenThings{false, false, false, true, true}), EscTarget::Help);
+    EXPECT_EQ(escTarget(OpenThings{false, false, false, false, true}), EscTarget::Fullscreen);
+    // The key table: Esc goes back, Ctrl+Q quits; no printable key quits.
+    EXPECT_EQ(actionForKey(NamedKey::Escape), Action::Back);
+    EXPECT_EQ(actionForKey(NamedKey::CtrlQ), Action::Quit);
+    for (unsigned c = 1; c < 128; ++c) EXPECT_NE(actionForChar(c), Action::Quit) << c;
+}
+
+// Camera, light, material and settings count as unsaved changes; saving clears them.
+TEST(UnsavedChanges, CameraLightMaterialAndSettingsCountAndSavingClearsThem) {
+    ViewerModel m;
+    ASSERT_FALSE(m.load(kDefaultScene));
+    EXPECT_FALSE(m.unsaved());
+    m.prepareFrame(800, 600);  // the window's size is no change of the scene
+    EXPECT_FALSE(m.unsaved());
+    m.rotate(40.0, 0.0);
+    EXPECT_TRUE(m.unsaved());
+    m.resetCamera();
+    EXPECT_FALSE(m.unsaved());
+    m.scene.lighting.light.position.x += 1.0;
+    EXPECT_TRUE(m.unsaved());
+    m.markSaved();
+    m.scene.lighting.material.ks = 0.9;
+    EXPECT_TRUE(m.unsaved());
+    m.markSaved();
+    m.settings.cullBackFaces = !m.settings.cullBackFaces;
+    EXPECT_TRUE(m.unsaved());
+    const fs::path out =
+        fs::temp_directory_path() / ("facet_unsaved_" + std::to_string(::getpid())) / "saved.scene";
+    fs::create_directories(out.parent_path());
+    m.prepareFrame(800, 600);
+    ASSERT_FALSE(m.saveScene(out.string()));
+    EXPECT_FALSE(m.unsaved());
+    fs::remove_all(out.parent_path());
+}
+
+}  // namespace
+
+namespace {
+
+// The side bar narrows itself in a small window (the frame keeps most of it) and collapses
+// below kCollapseBelow; a large window gets the full width.
+TEST(Workspace, TheSideBarNarrowsInASmallWindow) {
+    EXPECT_EQ(autoSidebarWidth(1920, 1.0), kSidebarWidth);
+    EXPECT_EQ(autoSidebarWidth(1660, 1.0), kSidebarWidth);
+    EXPECT_EQ(autoSidebarWidth(3840, 2.0), 2 * kSidebarWidth);
+    EXPECT_EQ(autoSidebarWidth(800, 1.0), 272);
+    EXPECT_EQ(autoSidebarWidth(600, 1.0), kSidebarMinWidth);
+    // At 800x600 a frame that follows the window keeps 60 % of its area or more.
+    const Workspace w =
+        workspaceLayout(800, 600, autoSidebarWidth(800, 1.0), SidebarState::Open, 1.0);
+    EXPECT_GE(w.image.w * w.image.h, 0.6 * 800 * 600);
+    EXPECT_FALSE(autoCollapsed(800, 1.0));
+    EXPECT_TRUE(autoCollapsed(500, 1.0));
+    EXPECT_FALSE(autoCollapsed(1000, 1.5));
+    EXPECT_TRUE(autoCollapsed(900, 1.5));
+}
+
+}  // namespace
+
+namespace {
+
+// D without two pictures does nothing to the document (the window says why): it no longer
+// silently turns on difference mode for a later Compare.
+TEST(KeyMap, DWithoutComparisonChangesNothing) {
+    ViewerModel m;
+    ASSERT_FALSE(m.load(kDefaultScene));
+    CompareSettings compare;
+    EXPECT_FALSE(applyDocumentAction(Action::ToggleDifference, m, compare));
+    EXPECT_EQ(compare.display, CompareDisplay::Split);
+    EXPECT_TRUE(applyDocumentAction(Action::ToggleCompare, m, compare));
+    EXPECT_TRUE(applyDocumentAction(Action::ToggleDifference, m, compare));
+    EXPECT_EQ(compare.display, CompareDisplay::Difference);
 }
 
 }  // namespace

@@ -47,13 +47,22 @@ void handleInput(App& app) {
             if (!ImGui::IsMouseClicked(b)) continue;
             app.drag.button = b;
             app.drag.divider = b == ImGuiMouseButton_Left && overDivider(app, io.MousePos);
+            // Measured from the press: the pointer's travel before it is no drag.
+            app.drag.lastX = io.MouseClickedPos[b].x;
+            app.drag.lastY = io.MouseClickedPos[b].y;
             break;
         }
     }
     if (app.drag.button >= 0) {
-        // The delta first: a press, move and release between two frames still moves.
-        const double dx = io.MouseDelta.x;
-        const double dy = io.MouseDelta.y;
+        // From the press (or last frame's place) to here; the travel before the press is not
+        // the drag's (at a few frames a second it turned the view by 90 degrees at a click).
+        const bool valid = ImGui::IsMousePosValid();  // not while outside the window
+        const double dx = valid ? io.MousePos.x - app.drag.lastX : 0.0;
+        const double dy = valid ? io.MousePos.y - app.drag.lastY : 0.0;
+        if (valid) {
+            app.drag.lastX = io.MousePos.x;
+            app.drag.lastY = io.MousePos.y;
+        }
         const bool moved = (dx != 0.0 || dy != 0.0) && std::isfinite(dx) && std::isfinite(dy);
         if (moved && app.drag.divider) {
             if (app.view.w > 0)

@@ -50,11 +50,12 @@ const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings&
 
 ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, CompareDisplay display,
                        double divider, int heatScale, Framebuffer& shown) {
+    const ImageDiff d = diffCovered(left, right);
     if (display == CompareDisplay::Difference)
-        diffImages(left, right, &shown, heatScale);
+        diffImages(left, right, &shown, heatTop(heatScale, d.maxError));
     else
         composeSplit(left, right, dividerColumn(divider, left.width), shown);
-    return diffCovered(left, right);
+    return d;
 }
 
 const Framebuffer& CompareView::compose(const CompareSettings& compare) {

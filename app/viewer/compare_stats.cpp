@@ -31,7 +31,7 @@ ImageDiff diffCovered(const Framebuffer& a, const Framebuffer& b) {
 }
 
 int heatTop(int heatScale, int maxError) {
-    return heatScale > 0 ? heatScale : std::max(1, maxError);
+    return heatScale > 0 ? heatScale : std::max(kMinAutoHeat, maxError);
 }
 
 glm::dvec3 heatColour(double error, int top) {

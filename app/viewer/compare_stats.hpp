@@ -18,8 +18,12 @@ namespace facet::view {
 /// planes count every pixel. Different sizes compare nothing (sameSize false).
 ImageDiff diffCovered(const Framebuffer& a, const Framebuffer& b);
 
-/// The error the heat map shows brightest: the scale when set (> 0), else the largest error
-/// (at least 1), as facet::diffImages colours it.
+/// The automatic heat scale is never below this: differences of one or two 8-bit steps (the
+/// CPU engine against the OpenGL twin) show dark, not glaring yellow.
+inline constexpr int kMinAutoHeat = 16;
+
+/// The error the heat map shows brightest: the scale when set (> 0), else the largest error,
+/// at least kMinAutoHeat (the heat map and its colour bar both use it).
 int heatTop(int heatScale, int maxError);
 
 /// The heat map's colour for an error (8-bit steps) with `top` brightest: black for 0, viridis

@@ -119,11 +119,13 @@ void pushRecent(std::vector<std::string>& recent, const std::string& path, std::
 }
 
 std::string defaultSavePath(const std::string& opened) {
-    const std::string stem = fs::path(opened).stem().string();
-    const std::string name = (stem.empty() ? std::string("scene") : stem);
     std::error_code ec;
-    if (!fs::exists(name + ".scene", ec)) return name + ".scene";
-    return fs::path(nextFreePath(".", name, ".scene")).filename().string();
+    const fs::path full = fs::absolute(fs::path(opened), ec).lexically_normal();
+    const std::string stem = full.stem().string();
+    const std::string name = (stem.empty() ? std::string("scene") : stem);
+    const fs::path folder = full.parent_path();
+    if (!fs::exists(folder / (name + ".scene"), ec)) return (folder / (name + ".scene")).string();
+    return nextFreePath(folder.string(), name, ".scene");
 }
 
 DropPlan planDrop(const std::vector<std::string>& paths) {

@@ -47,8 +47,9 @@ bool writeRecent(const std::string& file, const std::vector<std::string>& recent
 /// Puts `path` (made absolute) first in `recent`, dropping an older copy and entries beyond `max`.
 void pushRecent(std::vector<std::string>& recent, const std::string& path, std::size_t max);
 
-/// Where "Save scene" writes by default: `stem`.scene in the current folder (the opened file's
-/// folder may be read-only), or `stem`-NNNN.scene when that is taken.
+/// Where "Save scene" proposes to write, as an absolute path: `stem`.scene in the opened file's
+/// folder, or `stem`-NNNN.scene there when that is taken (the first save asks, so a read-only
+/// folder is seen and changed, never silently replaced by the working folder).
 std::string defaultSavePath(const std::string& opened);
 
 /// What a drop of files on the window does: the last scene or mesh is opened, the last image

@@ -3,6 +3,8 @@
 // screenshot, overlays) here. The same actions sit behind buttons in the side bar.
 
 #include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 
@@ -35,7 +37,50 @@ GLFWmonitor* monitorOf(GLFWwindow* window) {
     return best;
 }
 
+/// Esc: closes one thing, the innermost (escTarget), and never quits.
+void closeInnermost(App& app) {
+    WorkspaceUi& w = app.work;
+    OpenThings open;
+    open.popup = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+    open.inspector = app.inspector.open && app.inspector.valid;
+    open.measureTable = w.accuracyTable && app.accuracy.report() != nullptr;
+    open.help = w.help;
+    open.fullscreen = w.fullscreen;
+    switch (escTarget(open)) {
+        case EscTarget::Popup: {
+            ImGuiContext& g = *ImGui::GetCurrentContext();
+            ImGui::ClosePopupToLevel(g.OpenPopupStack.Size - 1, true);
+            break;
+        }
+        case EscTarget::Inspector:
+            app.inspector.open = false;
+            break;
+        case EscTarget::MeasureTable:
+            w.accuracyTable = false;
+            break;
+        case EscTarget::Help:
+            w.help = false;
+            break;
+        case EscTarget::Fullscreen:
+            toggleFullscreen(app);
+            break;
+        case EscTarget::None:
+            break;
+    }
+}
+
 }  // namespace
+
+void askToQuit(App& app) {
+    WorkspaceUi& w = app.work;
+    // Asked already (the question is open): the second Ctrl+Q or close click quits.
+    if (w.quitAsked || !app.model.unsaved()) {
+        app.keys.quit = true;
+        return;
+    }
+    w.quitAsked = true;
+    w.quitPending = true;
+}
 
 void applyActions(App& app) {
     WorkspaceUi& w = app.work;
@@ -45,11 +90,11 @@ void applyActions(App& app) {
             case Action::Help:
                 w.help = !w.help;
                 break;
+            case Action::Back:
+                closeInnermost(app);
+                break;
             case Action::Quit:
-                if (w.help)
-                    w.help = false;
-                else
-                    app.keys.quit = true;
+                askToQuit(app);
                 break;
             case Action::TogglePanels:
                 app.ui.showPanels = !app.ui.showPanels;
@@ -62,6 +107,11 @@ void applyActions(App& app) {
                 break;
             case Action::ToggleStats:
                 w.statsOverlay = !w.statsOverlay;
+                break;
+            case Action::ToggleDifference:  // not applied: nothing is compared
+                showNotice(app,
+                           "D shows the difference of two pictures: turn on Compare (C) or "
+                           "side by side (G) first");
                 break;
             case Action::ToggleLightMarker:
                 w.lightMarker = !w.lightMarker;

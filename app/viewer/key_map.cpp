@@ -12,10 +12,17 @@ namespace {
 
 using enum Action;
 
+// Rows the help shows as one.
+constexpr std::string_view kDraw = "draw: solid, wireframe, vertices";
+constexpr std::string_view kShader = "shader: painter, depth, texture, simple (no depth test)";
+
 // Letters are matched in both cases: Shift or Caps Lock should not make a key dead.
 constexpr std::array kKeys{
     KeyBinding{Help, "F1  ?", "this help", "?", NamedKey::F1, std::nullopt},
-    KeyBinding{Quit, "Esc", "close the help, else quit", "", NamedKey::Escape, std::nullopt},
+    KeyBinding{Back, "Esc", "close what is open, innermost first (never quits)", "",
+               NamedKey::Escape, std::nullopt},
+    KeyBinding{Quit, "Ctrl+Q", "quit (asks once if the scene has unsaved changes)", "",
+               NamedKey::CtrlQ, std::nullopt},
     KeyBinding{TogglePanels, "Tab", "hide or show the side bar", "", NamedKey::Tab, std::nullopt},
     KeyBinding{FrameModel, "F", "frame the model (its bounding sphere)", "fF", std::nullopt,
                std::nullopt},
@@ -25,13 +32,14 @@ constexpr std::array kKeys{
                std::nullopt},
     KeyBinding{ToggleStats, "S", "stats overlay", "sS", std::nullopt, std::nullopt},
     KeyBinding{ToggleLightMarker, "M", "light marker", "mM", std::nullopt, std::nullopt},
-    KeyBinding{ModeSolid, "1", "draw solid", "1", std::nullopt, std::nullopt},
-    KeyBinding{ModeWireframe, "2", "draw wireframe", "2", std::nullopt, std::nullopt},
-    KeyBinding{ModeVertices, "3", "draw vertices", "3", std::nullopt, std::nullopt},
-    KeyBinding{ShaderPainter, "4", "painter shader", "4", std::nullopt, std::nullopt},
-    KeyBinding{ShaderDepth, "5", "depth shader", "5", std::nullopt, std::nullopt},
-    KeyBinding{ShaderTexture, "6", "texture shader", "6", std::nullopt, std::nullopt},
-    KeyBinding{ShaderSimple, "7", "simple shader (no depth test)", "7", std::nullopt, std::nullopt},
+    KeyBinding{ModeSolid, "1", "draw solid", "1", std::nullopt, std::nullopt, kDraw},
+    KeyBinding{ModeWireframe, "2", "draw wireframe", "2", std::nullopt, std::nullopt, kDraw},
+    KeyBinding{ModeVertices, "3", "draw vertices", "3", std::nullopt, std::nullopt, kDraw},
+    KeyBinding{ShaderPainter, "4", "painter shader", "4", std::nullopt, std::nullopt, kShader},
+    KeyBinding{ShaderDepth, "5", "depth shader", "5", std::nullopt, std::nullopt, kShader},
+    KeyBinding{ShaderTexture, "6", "texture shader", "6", std::nullopt, std::nullopt, kShader},
+    KeyBinding{ShaderSimple, "7", "simple shader (no depth test)", "7", std::nullopt, std::nullopt,
+               kShader},
     KeyBinding{NextLighting, "L", "lighting: off, Gouraud, Phong", "lL", std::nullopt,
                std::nullopt},
     KeyBinding{NextInterp, "I", "interpolation: affine, subdivided, perspective", "iI",
@@ -69,6 +77,19 @@ std::span<const KeyBinding> keyBindings() {
     return kKeys;
 }
 
+std::vector<HelpRow> helpRows() {
+    std::vector<HelpRow> rows;
+    for (const KeyBinding& k : kKeys) {
+        if (!k.group.empty() && !rows.empty() && rows.back().what == k.group) {
+            rows.back().keys += " ";
+            rows.back().keys += k.keys;
+            continue;
+        }
+        rows.push_back({std::string(k.keys), std::string(k.group.empty() ? k.what : k.group)});
+    }
+    return rows;
+}
+
 std::span<const MouseBinding> mouseBindings() {
     return kMouse;
 }
@@ -91,6 +112,15 @@ std::string_view keysFor(Action action) {
     for (const KeyBinding& k : kKeys)
         if (k.action == action) return k.keys;
     return {};
+}
+
+EscTarget escTarget(const OpenThings& open) {
+    if (open.popup) return EscTarget::Popup;
+    if (open.inspector) return EscTarget::Inspector;
+    if (open.measureTable) return EscTarget::MeasureTable;
+    if (open.help) return EscTarget::Help;
+    if (open.fullscreen) return EscTarget::Fullscreen;
+    return EscTarget::None;
 }
 
 bool applyDocumentAction(Action action, ViewerModel& model, CompareSettings& compare) {
@@ -136,6 +166,8 @@ bool applyDocumentAction(Action action, ViewerModel& model, CompareSettings& com
             setCompare(!compare.enabled, model.rendererChoice, compare);
             return true;
         case ToggleDifference:
+            // Only where two pictures are shown: elsewhere the window says how to get them.
+            if (!planFrame(model.rendererChoice, compare.enabled).twoSides()) return false;
             compare.display = compare.display == CompareDisplay::Split ? CompareDisplay::Difference
                                                                        : CompareDisplay::Split;
             return true;

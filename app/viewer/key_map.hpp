@@ -6,7 +6,9 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace facet::view {
 
@@ -16,7 +18,8 @@ struct CompareSettings;
 /// What a key (or a button doing the same) asks for.
 enum class Action {
     Help,               ///< show or hide the key and mouse overlay
-    Quit,               ///< close the help if it is open, else quit
+    Back,               ///< close the innermost open thing (escTarget); never quits
+    Quit,               ///< quit, after one question when the scene has unsaved changes
     TogglePanels,       ///< hide or show the side bar
     FrameModel,         ///< turn-around point and distance so the model's bounding sphere fits
     ResetCamera,        ///< back to the scene file's camera
@@ -41,7 +44,7 @@ enum class Action {
 };
 
 /// Keys without a character.
-enum class NamedKey { Escape, Tab, Home, F1, F11, F12 };
+enum class NamedKey { Escape, Tab, Home, F1, F11, F12, CtrlQ };
 
 /// One line of the help: the keys, what they do, and what triggers them.
 struct KeyBinding {
@@ -51,7 +54,17 @@ struct KeyBinding {
     std::string_view chars;  ///< printable characters that trigger it (ASCII)
     std::optional<NamedKey> named;
     std::optional<NamedKey> named2;
+    std::string_view group = {};  ///< the help's one row for a run of bindings (1 2 3: draw...)
 };
+
+/// One row of the help: keys and what they do (a group's bindings share a row).
+struct HelpRow {
+    std::string keys;
+    std::string what;
+};
+
+/// The help's key rows, in the table's order, groups merged ("1 2 3", "draw: solid, ...").
+std::vector<HelpRow> helpRows();
 
 /// The key table, in the order the help lists it.
 std::span<const KeyBinding> keyBindings();
@@ -73,6 +86,21 @@ std::optional<Action> actionForKey(NamedKey key);
 
 /// The keys of an action as the help shows them ("" when it has none): for button labels.
 std::string_view keysFor(Action action);
+
+/// What is open in the window, for Esc.
+struct OpenThings {
+    bool popup = false;      ///< an ImGui pop-up: a combo's drop-down, the error or quit question
+    bool inspector = false;  ///< the pixel inspector's window
+    bool measureTable = false;  ///< the ground-truth table's window (Measure)
+    bool help = false;          ///< the keys and mouse overlay
+    bool fullscreen = false;
+};
+
+/// What Esc closes: the innermost open thing, or nothing.
+enum class EscTarget { Popup, Inspector, MeasureTable, Help, Fullscreen, None };
+
+/// The innermost open thing, in the order pop-up, inspector, table, help, fullscreen.
+EscTarget escTarget(const OpenThings& open);
 
 /// Applies the actions that edit only the document (framing, camera, draw mode, shader,
 /// lighting, interpolation, Compare, normals, culling, renderer); returns false for the others

@@ -80,7 +80,9 @@ void dragLightStep(App& app) {
         const glm::dvec2 pixel =
             windowToFrame(app.view, camera.width, camera.height, {io.MousePos.x, io.MousePos.y});
         light = dragLight(camera, light, app.model.orbit.target, app.model.orbit.distance, pixel);
-    } else if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) {
+    } else if ((io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) &&
+               !ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {  // the travel before the press
+                                                                 // is no turn
         light = turnLight(camera, light, app.model.orbit.target, app.model.orbit.distance,
                           io.MouseDelta.x, io.MouseDelta.y);
     }
@@ -88,6 +90,8 @@ void dragLightStep(App& app) {
 }
 
 void drawLightMarker(App& app) {
+    app.work.markerNote.clear();
+    app.work.markerNoteRect = {};
     if (!lightMarkerShown(app)) return;
     const LightMarker m = marker(app);
     const Camera& c = app.model.scene.camera;
@@ -108,6 +112,27 @@ void drawLightMarker(App& app) {
         const ImVec2 base(p.x + ux * 8.0f * s, p.y + uy * 8.0f * s);
         draw->AddTriangleFilled(tip, ImVec2(base.x - uy * half, base.y + ux * half),
                                 ImVec2(base.x + uy * half, base.y - ux * half), fill);
+        // Said in words, beside it on the image's side: a marker on the border is no light
+        // sitting there.
+        app.work.markerNote = "light off screen: drag the sun in";
+        const ImVec2 size = ImGui::CalcTextSize(app.work.markerNote.c_str());
+        const float gap = 16.0f * s;
+        ImVec2 at(p.x - ux * gap - 0.5f * size.x * (1.0f + ux),
+                  p.y - uy * gap - 0.5f * size.y * (1.0f + uy));
+        const Rect& v = app.view;
+        at.x = std::clamp(at.x, static_cast<float>(v.x) + 2.0f,
+                          std::max(static_cast<float>(v.x) + 2.0f,
+                                   static_cast<float>(v.x + v.w) - size.x - 2.0f));
+        at.y = std::clamp(at.y, static_cast<float>(v.y) + 2.0f,
+                          std::max(static_cast<float>(v.y) + 2.0f,
+                                   static_cast<float>(v.y + v.h) - size.y - 2.0f));
+        draw->AddRectFilled(ImVec2(at.x - 3.0f * s, at.y - 1.0f * s),
+                            ImVec2(at.x + size.x + 3.0f * s, at.y + size.y + 1.0f * s),
+                            IM_COL32(0, 0, 0, 170), 3.0f * s);
+        draw->AddText(at, fill, app.work.markerNote.c_str());
+        app.work.markerNoteRect = {
+            static_cast<int>(at.x - 3.0f * s) - 1, static_cast<int>(at.y - 1.0f * s) - 1,
+            static_cast<int>(size.x + 6.0f * s) + 3, static_cast<int>(size.y + 2.0f * s) + 3};
     } else if (m.directional && m.aimVisible) {
         // The way the light travels: from the handle to the look-at point, head at the end.
         const ImVec2 a = toWindow(app, m.aim);

@@ -91,10 +91,15 @@ glm::dvec4 dragLight(const Camera& camera, const glm::dvec4& light, const glm::d
                      double orbitDistance, glm::dvec2 pixel) {
     const glm::dvec3 handle = handleOf(light, target, orbitDistance);
     if (!finite(handle) || !std::isfinite(pixel.x) || !std::isfinite(pixel.y)) return light;
-    const double r = radiusOf(handle, target, orbitDistance);
     // The pointer's ray: camera-space direction ((x − w/2)/f, (y − h/2)/f, 1) taken to world.
     const glm::dmat4 worldFromCamera = glm::inverse(cameraFromWorld(camera));
     const glm::dvec3 eye(worldFromCamera * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    // The sphere is never larger than the camera's distance (kDragSphere of it): the eye stays
+    // outside, and the near intersection, the one taken, lies on the hemisphere the camera sees,
+    // so the light stays on the model's lit side (a farther light would be met only behind).
+    const double r =
+        std::min(radiusOf(handle, target, orbitDistance), kDragSphere * glm::length(eye - target));
+    if (!(r > 0.0)) return light;
     const double f = camera.focal;
     const glm::dvec3 dirCam((pixel.x - 0.5 * camera.width) / f, (pixel.y - 0.5 * camera.height) / f,
                             1.0);
@@ -105,16 +110,8 @@ glm::dvec4 dragLight(const Camera& camera, const glm::dvec4& light, const glm::d
     const double c = glm::dot(oc, oc) - r * r;
     const double disc = b * b - c;
     glm::dvec3 next;
-    if (disc >= 0.0) {
-        const double s = std::sqrt(disc);
-        const glm::dvec3 near = eye + dir * (-b - s);
-        const glm::dvec3 far = eye + dir * (-b + s);
-        // Behind the eye (the eye inside the sphere) only the far root is in view.
-        const bool nearInView = -b - s > 0.0;
-        if (!nearInView)
-            next = far;
-        else
-            next = glm::length(near - handle) <= glm::length(far - handle) ? near : far;
+    if (disc >= 0.0 && -b - std::sqrt(disc) > 0.0) {
+        next = eye + dir * (-b - std::sqrt(disc));
     } else {
         // Past the outline (the eye is outside the sphere): the outline's point on the
         // pointer's side. The outline is the circle of tangent points, centred r²/D from the

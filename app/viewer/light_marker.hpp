@@ -2,9 +2,9 @@
 // The light in the picture: where its marker goes and how dragging it moves the light. A point
 // light's marker is the light itself, projected; a directional light (w = 0) gets a handle at
 // kDirectionalHandle × the orbit distance from the look-at point, towards the light, with an
-// arrow to the look-at point (the way the light travels). Dragging the marker keeps its
-// distance from the look-at point and puts it under the pointer (on the sphere through it,
-// the side nearer its old place); Ctrl + drag turns it around the look-at point like the orbit.
+// arrow to the look-at point (the way the light travels). Dragging the marker puts it under the
+// pointer on a sphere around the look-at point (its distance, at most 0.9 of the camera's), on
+// the side the camera sees; Ctrl + drag turns it around the look-at point like the orbit.
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -16,6 +16,10 @@ namespace facet::view {
 
 /// A directional light's handle sits this share of the orbit distance from the look-at point.
 inline constexpr double kDirectionalHandle = 0.35;
+
+/// A dragged light moves on a sphere around the look-at point no larger than this share of the
+/// camera's distance from it.
+inline constexpr double kDragSphere = 0.9;
 
 /// Where the light's marker is.
 struct LightMarker {
@@ -43,9 +47,10 @@ LightMarker lightMarker(const Camera& camera, const glm::dvec4& light, const glm
 
 /// The light moved so that its marker sits under frame pixel `pixel`: the handle stays at its
 /// distance from `target` (a light at the target itself is taken at kDirectionalHandle × the
-/// orbit distance), on the side nearer where it was; a pointer beyond the sphere's outline puts
-/// it on the outline, on the pointer's side. w is kept: a point light stays a point, a directional
-/// one keeps |xyz|.
+/// orbit distance), but no farther than kDragSphere × the camera's, at the sphere's near point
+/// under the pointer, so always on the side the camera sees; a pointer beyond the sphere's
+/// outline puts it on the outline, on the pointer's side. w is kept: a point light stays a point, a
+/// directional one keeps |xyz|.
 glm::dvec4 dragLight(const Camera& camera, const glm::dvec4& light, const glm::dvec3& target,
                      double orbitDistance, glm::dvec2 pixel);
 

@@ -17,10 +17,10 @@ struct LoadJob::Shared {
     std::optional<Result<LoadedScene>> result;
 };
 
-Result<LoadedScene> loadSceneOrMesh(const std::string& path, int width, int height,
+Result<LoadedScene> loadSceneOrMesh(const std::string& path, const OpenOptions& options,
                                     const LoadControl* control) {
     const bool bareMesh = fileKind(path) == FileKind::mesh;
-    Result<Scene> scene = openSceneFile(path, width, height, control);
+    Result<Scene> scene = openSceneFile(path, options, control);
     if (!scene) return scene.error();
     return LoadedScene{path, std::move(scene).value(), bareMesh};
 }
@@ -30,7 +30,7 @@ LoadJob::~LoadJob() {
     for (auto& [thread, shared] : workers_) thread.join();
 }
 
-void LoadJob::start(const std::string& path, int width, int height) {
+void LoadJob::start(const std::string& path, const OpenOptions& options) {
     cancel();
     std::erase_if(workers_, [](auto& worker) {
         bool done = false;
@@ -45,13 +45,13 @@ void LoadJob::start(const std::string& path, int width, int height) {
     current_ = shared;
     path_ = path;
     started_ = std::chrono::steady_clock::now();
-    std::thread worker([shared, path, width, height] {
+    std::thread worker([shared, path, options] {
         LoadControl control;
         control.progress = [&shared = *shared](float f) {
             shared.progress.store(f, std::memory_order_relaxed);
         };
         control.cancel = &shared->stop;
-        Result<LoadedScene> loaded = loadSceneOrMesh(path, width, height, &control);
+        Result<LoadedScene> loaded = loadSceneOrMesh(path, options, &control);
         const std::lock_guard lock(shared->mutex);
         if (!shared->cancelled) shared->result.emplace(std::move(loaded));
         shared->done = true;

@@ -8,9 +8,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+
 #include <thread>
 #include <utility>
 #include <vector>
+#include "facet/scene_io.hpp"
 
 #include "facet/error.hpp"
 #include "facet/load_control.hpp"
@@ -34,8 +36,8 @@ class LoadJob {
     /// Cancels the load in flight and waits for its worker (a cancelled read stops quickly).
     ~LoadJob();
 
-    /// Starts opening `path`; a bare mesh gets a scene of `width` × `height`.
-    void start(const std::string& path, int width, int height);
+    /// Starts opening `path`; a bare mesh gets a scene framed by `options` (size, up axis).
+    void start(const std::string& path, const OpenOptions& options);
     /// True from start() until the result is taken or the load cancelled.
     bool running() const;
     /// Stops the load in flight and drops it; the viewer keeps its scene. Returns at once.
@@ -60,7 +62,7 @@ class LoadJob {
 };
 
 /// Opens `path` on the calling thread as LoadJob does on its worker.
-Result<LoadedScene> loadSceneOrMesh(const std::string& path, int width, int height,
+Result<LoadedScene> loadSceneOrMesh(const std::string& path, const OpenOptions& options,
                                     const LoadControl* control = nullptr);
 
 }  // namespace facet::view

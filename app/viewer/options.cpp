@@ -40,7 +40,7 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     CLI::App app{
         "facet-view: the facet rasterizer in a window. Drag with the left button to orbit, the "
         "right or middle one to pan, turn the wheel to zoom; F1 or ? lists every key, F12 or P "
-        "saves a screenshot, Esc quits."};
+        "saves a screenshot, Esc closes what is open, Ctrl+Q quits."};
     app.add_option("scene", o.scene,
                    "The .scene file or bare .off/.obj mesh to open (default: "
                    "assets/default.scene)");
@@ -70,6 +70,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_flag("--serial", o.serial,
                  "Render the next frame only after drawing this one (default: at the same time)");
     app.add_option("--texture", o.texture, "Texture image replacing the scene's");
+    app.add_option("--up", o.up,
+                   "World axis shown up for a bare mesh, x, y or z (default y; Z-up scans and CAD "
+                   "models want z); framing and orbiting use it, a saved scene keeps it");
     app.add_option("--ui-scale", o.uiScale,
                    "Scale of the panels' fonts and widgets (default: the monitor's content scale)")
         ->check(CLI::Range(0.5, 4.0));

@@ -27,10 +27,11 @@ struct ViewerOptions {
     bool hidePanels = false;       ///< start with the panels hidden (Tab shows them)
     bool serial = false;           ///< render and draw one after the other (for measuring)
     std::string texture;           ///< image replacing the scene's texture
+    std::string up = "y";          ///< --up: the world axis a bare mesh opens with up
     double uiScale = 0.0;          ///< --ui-scale: fonts and widgets (0: the monitor's scale)
 
     // Start-up render settings, as `facet render` spells them (already checked when parsed).
-    // Shader and lighting left empty: the scene decides (applySceneDefaults).
+    // Shader and lighting left empty: the scene decides (applyOpeningSettings, spec §9).
     std::string mode = "solid";
     std::string shader;
     std::string interp = "perspective";

@@ -98,7 +98,9 @@ void applyPose(const Orbit& orbit, Camera& camera) {
     const Pose pose = orbitPose(orbit);
     camera.eye = pose.eye;
     camera.look = pose.look;
-    camera.up = pose.up;
+    // The world's vertical as the y hint, not the screen's up: the same camera (spec §4
+    // takes x = up × z), and a saved scene carries its up axis (§3b).
+    camera.up = -orbit.vertical;
 }
 
 void orbitRotate(Orbit& o, double dx, double dy, double degreesPerPixel) {

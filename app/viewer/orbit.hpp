@@ -47,7 +47,8 @@ Orbit orbitMeasure(const Orbit& basis, const glm::dvec3& eye, const glm::dvec3& 
 /// The pose an orbit describes; always finite for a finite orbit.
 Pose orbitPose(const Orbit& orbit);
 
-/// Writes an orbit's pose into a camera (eye, look, up), leaving focal and size alone.
+/// Writes an orbit's pose into a camera (eye, look, and −vertical as the y hint: the same
+/// picture as the pose's up, and it carries the up axis), leaving focal and size alone.
 void applyPose(const Orbit& orbit, Camera& camera);
 
 /// Camera axes of an orbit in world space: right (image +x) and screen up (image −y).

@@ -121,6 +121,10 @@ void accuracyWindow(App& app) {
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x) + margin,
                                    static_cast<float>(image.y + image.h) - margin),
                             ImGuiCond_Appearing, ImVec2(0.0f, 1.0f));
+    // Never larger than the image area (it scrolls instead).
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                        ImVec2(static_cast<float>(image.w) - 2.0f * margin,
+                                               static_cast<float>(image.h) - 2.0f * margin));
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
     if (ImGui::Begin("Against the ground truth", &app.work.accuracyTable, flags)) {

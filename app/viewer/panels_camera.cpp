@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "framing.hpp"
@@ -17,12 +18,26 @@ void cameraPanel(App& app) {
     ViewerModel& m = app.model;
     Orbit& o = m.orbit;
     bool edited = false;
-    edited |= sliderDouble("yaw", o.yaw, -180.0, 180.0, "%.1f deg");
-    edited |= sliderDouble("pitch", o.pitch, -kMaxPitch, kMaxPitch, "%.1f deg");
+    // Angles that round to zero read "0.0", never "-0.0".
+    auto degrees = [](double v) { return std::abs(v) < 0.05 ? "0.0 deg" : "%.1f deg"; };
+    edited |= sliderDouble("yaw", o.yaw, -180.0, 180.0, degrees(o.yaw));
+    edited |= sliderDouble("pitch", o.pitch, -kMaxPitch, kMaxPitch, degrees(o.pitch));
     edited |= sliderDouble("distance", o.distance, o.minDistance, o.maxDistance, "%.4g", true);
     edited |= dragDouble3("look-at", &o.target.x, std::max(1e-6, o.distance * 0.005), "%.3f");
     if (edited) m.orbitEdited();
     sliderDouble("focal (px)", m.focal, 10.0, 100000.0, "%.1f", true);
+    // The world axis shown up: a bare mesh is framed again for it, a scene turns its orbit.
+    const std::optional<UpAxis> axis = m.orbitAxis();
+    ImGui::TextUnformatted("up axis");
+    for (const UpAxis a : {UpAxis::X, UpAxis::Y, UpAxis::Z}) {
+        ImGui::SameLine();
+        const char* names[] = {"X", "Y", "Z"};
+        if (ImGui::RadioButton(names[static_cast<int>(a)], axis == a)) m.setUpAxis(a);
+    }
+    if (!axis) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(the scene's own)");
+    }
     if (ImGui::Button("Frame the model (F)")) frameModel(m);
     ImGui::SameLine();
     if (ImGui::Button("Scene's camera (Home, R)")) m.resetCamera();

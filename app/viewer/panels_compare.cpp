@@ -53,7 +53,8 @@ void colourBar(App& app) {
     const float s = app.work.scale;
     const int top = heatTop(c.heatScale, sides.diff.maxError);
     const char* caption = "error, 8-bit steps";
-    const char* note = c.heatScale ? "black: equal; top: heat scale" : "black: equal; top: max";
+    const char* note =
+        c.heatScale ? "black: equal; top: heat scale" : "black: equal; top: max (16 or more)";
     const float w =
         std::min(std::max(160.0f * s, ImGui::CalcTextSize(note).x), 0.6f * static_cast<float>(v.w));
     const float h = 12.0f * s;

@@ -352,7 +352,9 @@ void inspectorWindow(App& app) {
         const float x = pixelOnRight ? static_cast<float>(image.x) + margin
                                      : static_cast<float>(image.x + image.w) - margin - width;
         ImGui::SetNextWindowPos(ImVec2(x, static_cast<float>(image.y) + margin), ImGuiCond_Always);
-        ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+        // Its content's height (0: fit), at most the image area's: a background pixel's five
+        // lines get a small window.
+        ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
         s.placed = true;
         s.openRow = -1;
         for (std::size_t i = 0; i < s.history.fragments.size() && s.openRow < 0; ++i)
@@ -360,7 +362,10 @@ void inspectorWindow(App& app) {
                 s.openRow = static_cast<int>(i);
         if (s.openRow < 0 && !s.history.fragments.empty()) s.openRow = 0;
     }
-    ImGui::SetNextWindowBgAlpha(0.96f);
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(std::min(width, 200.0f * scale), 0.0f),
+        ImVec2(static_cast<float>(image.w) - 2.0f * margin, height));
+    ImGui::SetNextWindowBgAlpha(0.9f);
     if (ImGui::Begin("Pixel inspector", &s.open, ImGuiWindowFlags_NoSavedSettings)) {
         noteWindow(app, "inspector");
         summary(app, s);

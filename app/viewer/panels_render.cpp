@@ -133,10 +133,13 @@ void renderPanel(App& app) {
             parseLighting(lightings[static_cast<std::size_t>(lighting)]).value_or(s.lighting);
         lightingChosen(s);
     }
+    // Filter and combine only mean something to the texture shader: greyed out under the others.
+    ImGui::BeginDisabled(s.shader != ShaderKind::Texture);
     int filter = nameIndex(filters, toString(s.filter));
     if (comboNames("texture filter", filters, filter))
         s.filter = parseFilter(filters[static_cast<std::size_t>(filter)]).value_or(s.filter);
     ImGui::Checkbox("combine (texel x colour)", &s.combine);
+    ImGui::EndDisabled();
     if (const std::string note = noEffectNote(app.model.scene, s); !note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", note.c_str());

@@ -42,10 +42,7 @@ void openDropped(App& app) {
     if (!plan.folder.empty()) listFolderInto(app, plan.folder);
     if (!plan.texture.empty()) {
         app.ui.texturePath = plan.texture;
-        openTexture(app, plan.texture);
-        // A texture dropped on a mesh with uvs is there to be seen.
-        if (app.model.scene.texture && app.model.scene.mesh->hasUvs())
-            app.model.settings.shader = ShaderKind::Texture;
+        openTexture(app, plan.texture);  // with the settings that show it, as any route
     }
     if (!plan.open.empty()) openScene(app, plan.open);
     if (!plan.refused.empty()) {
@@ -89,15 +86,63 @@ void installFileDrop(App& app) {
 }
 
 void saveShownScene(App& app) {
-    if (app.ui.saveScenePath.empty()) return;
-    if (Status error = app.model.saveScene(app.ui.saveScenePath)) {
-        app.ui.lastSave = error->what();
-        showError(app, "Cannot save the scene", error->what());
+    if (!app.ui.saveChosen) {
+        app.ui.saveDialogPending = true;  // the first save asks where (saveDialog)
         return;
     }
-    app.ui.lastSave = "saved " + app.ui.saveScenePath;
-    std::printf("facet-view: saved scene %s\n", app.ui.saveScenePath.c_str());
+    writeShownScene(app);
+}
+
+bool writeShownScene(App& app) {
+    if (app.ui.saveScenePath.empty()) return false;
+    std::error_code ec;
+    const std::string full =
+        std::filesystem::absolute(app.ui.saveScenePath, ec).lexically_normal().string();
+    if (Status error = app.model.saveScene(full, app.ui.saveWindowSize)) {
+        app.ui.lastSave = error->what();
+        showError(app, "Cannot save the scene", error->what());
+        return false;
+    }
+    app.ui.saveScenePath = full;
+    app.ui.saveChosen = true;
+    app.ui.lastSave = "saved " + full;
+    showNotice(app, "Saved to " + full);
+    std::printf("facet-view: saved scene %s\n", full.c_str());
     std::fflush(stdout);
+    return true;
+}
+
+void saveDialog(App& app) {
+    const char* id = "Save scene##save";
+    bool focus = false;
+    if (app.ui.saveDialogPending) {
+        ImGui::OpenPopup(id);
+        app.ui.saveDialogPending = false;
+        focus = true;
+    }
+    const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    noteWindow(app, "save_dialog");
+    const Camera user = app.model.userCamera();
+    const Camera& frame = app.model.scene.camera;
+    ImGui::TextUnformatted("The camera, light and material shown, as a .scene file:");
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 32.0f);
+    if (focus) ImGui::SetKeyboardFocusHere();
+    const bool enter =
+        ImGui::InputText("##savepath", &app.ui.saveScenePath, ImGuiInputTextFlags_EnterReturnsTrue);
+    char label[96];
+    std::snprintf(label, sizeof label, "at the window's size (%dx%d), not the scene's (%dx%d)",
+                  frame.width, frame.height, user.width, user.height);
+    ImGui::Checkbox(label, &app.ui.saveWindowSize);
+    if (ImGui::Button("Save") || enter) {
+        if (writeShownScene(app)) ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::SameLine();
+    ImGui::TextDisabled("Enter saves, Esc cancels");
+    ImGui::EndPopup();
 }
 
 void sceneFileEvents(App& app) {
@@ -134,7 +179,7 @@ void scenePanel(App& app) {
     const bool save =
         ImGui::InputText("##save", &app.ui.saveScenePath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    if (ImGui::Button("Save scene") || save) saveShownScene(app);
+    if (ImGui::Button("Save scene") || save) writeShownScene(app);  // the path is in view
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Ctrl+S: write the camera, image size, light and material shown as a .scene file");

@@ -90,8 +90,10 @@ void statsPanel(App& app) {
     const float top = plot.empty() ? 1.0f : *std::max_element(plot.begin(), plot.end()) * 1.2f;
     char overlay[48];
     std::snprintf(overlay, sizeof overlay, "frame ms (max %.1f)", top / 1.2f);
-    ImGui::PlotLines("##history", plot.data(), static_cast<int>(plot.size()), 0, overlay, 0.0f, top,
-                     ImVec2(-1.0f, 60.0f * app.work.scale));
+    ImGui::PlotLines(
+        "##history", plot.data(), static_cast<int>(plot.size()), 0, overlay, 0.0f, top,
+        // An explicit width: -1 gave a 4-pixel strip here (ImGui 1.86).
+        ImVec2(std::max(40.0f, ImGui::GetContentRegionAvail().x), 60.0f * app.work.scale));
     const Camera& c = app.model.scene.camera;
     ImGui::Text("frame %dx%d", c.width, c.height);
     if (plan.engineCompare) {

@@ -2,28 +2,15 @@
 
 namespace facet::view {
 
-void applySceneDefaults(const Scene& scene, bool bareMesh, RenderSettings& settings) {
-    if (scene.texture && scene.mesh->hasUvs()) {
-        settings.shader = ShaderKind::Texture;
-        settings.combine = true;
-        settings.lighting = Lighting::Gouraud;
-    } else if (bareMesh) {
-        settings.shader = ShaderKind::Painter;
-        settings.combine = false;
-        settings.lighting = Lighting::Gouraud;
-    } else {
-        settings.shader = ShaderKind::Painter;
-        settings.combine = false;
-        settings.lighting = Lighting::Off;
-    }
-}
-
 void lightingChosen(RenderSettings& settings) {
     if (settings.shader == ShaderKind::Texture && settings.lighting != Lighting::Off)
         settings.combine = true;
 }
 
 std::string noEffectNote(const Scene& scene, const RenderSettings& settings) {
+    if (settings.shader == ShaderKind::Simple && settings.mode == DrawMode::Solid)
+        return "The simple shader has no depth test: farther triangles drawn later cover nearer "
+               "ones (the see-through patchwork). Try the painter shader, or cull back faces.";
     if (settings.shader != ShaderKind::Texture) return {};
     if (!scene.texture)
         return "The scene has no texture: the texture shader samples white. Load an image in "

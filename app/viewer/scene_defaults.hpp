@@ -1,7 +1,6 @@
 #pragma once
-// Start-up settings that show what a scene has (issue 14, point 6), and the Render panel's rule
-// that no setting silently does nothing. `facet render` keeps the course's defaults; only the
-// viewer picks these.
+// The Render panel's rule that no setting silently does nothing. What a scene opens with is the
+// library's rule (facet/scene_defaults.hpp, applyOpeningSettings), the same as the CLI's.
 
 #include <string>
 
@@ -9,11 +8,6 @@
 #include "facet/settings.hpp"
 
 namespace facet::view {
-
-/// Shader, lighting and combine for a freshly opened scene: a texture with uvs opens with the
-/// texture shader, combine and Gouraud; a bare mesh (no .scene) with Gouraud; a .scene without a
-/// usable texture keeps the course's unlit painter.
-void applySceneDefaults(const Scene& scene, bool bareMesh, RenderSettings& settings);
 
 /// Call after the user changed the lighting: under the texture shader lighting only shows
 /// through combine, so switching lighting on turns combine on.

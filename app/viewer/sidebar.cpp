@@ -24,7 +24,11 @@ constexpr ImGuiWindowFlags kOverlay =
 
 SidebarState sidebarState(const App& app) {
     if (!app.ui.showPanels) return SidebarState::Hidden;
-    return app.work.collapsed ? SidebarState::Collapsed : SidebarState::Open;
+    const WorkspaceUi& w = app.work;
+    // A narrow window starts with the strip, until << or >> says otherwise.
+    const bool narrow = !w.keepSidebar && autoCollapsed(app.fbWidth, w.scale);
+    const bool collapsed = w.collapseChosen ? w.collapsed : narrow || w.collapsed;
+    return collapsed ? SidebarState::Collapsed : SidebarState::Open;
 }
 
 /// The title row: the scene's name, help and collapse buttons; then the view toggles.
@@ -41,7 +45,7 @@ void sidebarHeader(App& app) {
     if (ImGui::Button("?", ImVec2(button, button))) w.help = !w.help;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys and mouse (F1 or ?)");
     ImGui::SameLine();
-    if (ImGui::Button("<<", ImVec2(button, button))) w.collapsed = true;
+    if (ImGui::Button("<<", ImVec2(button, button))) w.collapsed = w.collapseChosen = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Collapse the side bar (Tab hides it)");
     ImGui::Checkbox("stats (S)", &w.statsOverlay);
     ImGui::SameLine();
@@ -80,8 +84,9 @@ void sidebar(App& app) {
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
     // The height is the window's, the width the user's (dragging the right edge), within limits.
     ImGui::SetNextWindowSizeConstraints(ImVec2(least, height), ImVec2(most, height));
-    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(bar.w), height),
-                             w.sidebarSizeSet ? ImGuiCond_Always : ImGuiCond_Once);
+    // Set every frame (the width follows the window until the user drags the edge); a drag
+    // still wins, as ImGui applies it after this.
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(bar.w), height), ImGuiCond_Always);
     w.sidebarSizeSet = false;
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
@@ -93,7 +98,11 @@ void sidebar(App& app) {
     leaveBackgroundToGl(app);
     if (open) {
         noteWindow(app, "sidebar");
-        w.sidebarWidth = static_cast<int>(ImGui::GetWindowWidth());
+        const int now = static_cast<int>(ImGui::GetWindowWidth());
+        if (now != bar.w) {  // the user dragged the edge: that width from now on
+            w.sidebarWidth = now;
+            w.sidebarDragged = true;
+        }
         sidebarHeader(app);
         ImGui::PushItemWidth(-130.0f * scale);  // room for the labels on the right
         if (ImGui::CollapsingHeader("Scene")) scenePanel(app);
@@ -134,7 +143,10 @@ void collapsedStrip(App& app) {
     leaveBackgroundToGl(app);
     if (open) {
         noteWindow(app, "sidebar");
-        if (ImGui::Button(">>", ImVec2(-1.0f, 0.0f))) app.work.collapsed = false;
+        if (ImGui::Button(">>", ImVec2(-1.0f, 0.0f))) {
+            app.work.collapsed = false;
+            app.work.collapseChosen = true;
+        }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Open the side bar");
         if (ImGui::Button("?", ImVec2(-1.0f, 0.0f))) app.work.help = !app.work.help;
     }
@@ -156,11 +168,15 @@ void statsOverlay(App& app) {
         ImGui::Text("%.1f fps  %.2f ms", m.total > 0.0 ? 1000.0 / m.total : 0.0, m.total);
         const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
         const Camera& c = app.model.scene.camera;
-        if (plan.engine) ImGui::Text("CPU engine %.2f ms", m.render);
-        if (plan.twin)
-            ImGui::Text("%s %.2f ms",
-                        isLab(app.model.rendererChoice) ? "Your pipeline" : "OpenGL twin", m.twin);
-        ImGui::TextDisabled("%dx%d  (S hides)", c.width, c.height);
+        // A small image area gets the first line only: the box never hides much of the picture.
+        if (static_cast<float>(image.w) >= 600.0f * app.work.scale) {
+            if (plan.engine) ImGui::Text("CPU engine %.2f ms", m.render);
+            if (plan.twin)
+                ImGui::Text("%s %.2f ms",
+                            isLab(app.model.rendererChoice) ? "Your pipeline" : "OpenGL twin",
+                            m.twin);
+            ImGui::TextDisabled("%dx%d  (S hides)", c.width, c.height);
+        }
     }
     ImGui::End();
 }
@@ -182,46 +198,78 @@ void noticeOverlay(App& app) {
     ImGui::End();
 }
 
-/// Every key and mouse action, from the key map (the same table the keys dispatch through).
+/// One table of two columns: keys (or gestures) in colour, what they do.
+void helpTable(const char* id, const std::vector<HelpRow>& rows, ImVec4 colour) {
+    const ImGuiTableFlags table = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg;
+    if (!ImGui::BeginTable(id, 2, table)) return;
+    for (const HelpRow& r : rows) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextColored(colour, "%s", r.keys.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%s  ", r.what.c_str());
+    }
+    ImGui::EndTable();
+}
+
+/// Every key and mouse action, from the key map (the same table the keys dispatch through):
+/// keys and mouse side by side when the image area is wide enough, else one above the other;
+/// centred on the image area when it fits there, else on the window, never larger than it.
 void helpOverlay(App& app) {
-    const Rect& image = app.work.layout.image;
-    ImGui::SetNextWindowPos(
-        ImVec2(static_cast<float>(image.x) + 0.5f * static_cast<float>(image.w),
-               static_cast<float>(image.y) + 0.5f * static_cast<float>(image.h)),
-        ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    WorkspaceUi& w = app.work;
+    const Rect& image = w.layout.image;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float margin = 4.0f * w.scale;
+    std::vector<HelpRow> mouse;
+    for (const MouseBinding& m : mouseBindings())
+        mouse.push_back({std::string(m.gesture), std::string(m.what)});
+    const bool fitsImage = w.helpSize.x > 0.0f &&
+                           w.helpSize.x <= static_cast<float>(image.w) - 2.0f * margin &&
+                           w.helpSize.y <= static_cast<float>(image.h) - 2.0f * margin;
+    const ImVec2 centre =
+        fitsImage ? ImVec2(static_cast<float>(image.x) + 0.5f * static_cast<float>(image.w),
+                           static_cast<float>(image.y) + 0.5f * static_cast<float>(image.h))
+                  : ImVec2(0.5f * display.x, 0.5f * display.y);
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(0.0f, 0.0f), ImVec2(display.x - 2.0f * margin, display.y - 2.0f * margin));
     ImGui::SetNextWindowBgAlpha(0.96f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
-    if (ImGui::Begin("Keys and mouse (F1, ? or Esc closes)", &app.work.help, flags)) {
+    if (ImGui::Begin("Keys and mouse (F1, ? or Esc closes)", &w.help, flags)) {
         noteWindow(app, "help");
-        const ImGuiTableFlags table = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg;
-        if (ImGui::BeginTable("keys", 4, table)) {
-            const auto keys = keyBindings();
-            const auto mouse = mouseBindings();
-            const std::size_t rows = std::max(keys.size(), mouse.size());
-            for (std::size_t i = 0; i < rows; ++i) {
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                if (i < keys.size())
-                    ImGui::TextColored(ImVec4(1, 0.85f, 0.4f, 1), "%.*s",
-                                       static_cast<int>(keys[i].keys.size()), keys[i].keys.data());
-                ImGui::TableNextColumn();
-                if (i < keys.size())
-                    ImGui::Text("%.*s  ", static_cast<int>(keys[i].what.size()),
-                                keys[i].what.data());
-                ImGui::TableNextColumn();
-                if (i < mouse.size())
-                    ImGui::TextColored(ImVec4(0.5f, 0.8f, 1, 1), "%.*s",
-                                       static_cast<int>(mouse[i].gesture.size()),
-                                       mouse[i].gesture.data());
-                ImGui::TableNextColumn();
-                if (i < mouse.size())
-                    ImGui::Text("%.*s", static_cast<int>(mouse[i].what.size()),
-                                mouse[i].what.data());
+        const std::vector<HelpRow> keys = helpRows();
+        const ImVec4 keyColour(1, 0.85f, 0.4f, 1), mouseColour(0.5f, 0.8f, 1, 1);
+        // Side by side when both tables fit the window's width next to each other.
+        const ImGuiStyle& style = ImGui::GetStyle();
+        auto widest = [](const std::vector<HelpRow>& rows) {
+            float a = 0.0f, b = 0.0f;
+            for (const HelpRow& r : rows) {
+                a = std::max(a, ImGui::CalcTextSize(r.keys.c_str()).x);
+                b = std::max(b, ImGui::CalcTextSize((r.what + "  ").c_str()).x);
             }
-            ImGui::EndTable();
+            return a + b;
+        };
+        const float wide = widest(keys) + widest(mouse) + 8.0f * style.CellPadding.x +
+                           style.ItemSpacing.x + 2.0f * style.WindowPadding.x;
+        const bool sideBySide = wide <= display.x - 2.0f * margin;
+        if (sideBySide) {
+            ImGui::BeginGroup();
+            helpTable("keys", keys, keyColour);
+            ImGui::EndGroup();
+            ImGui::SameLine();
+            ImGui::BeginGroup();
+            helpTable("mouse", mouse, mouseColour);
+            ImGui::EndGroup();
+        } else {
+            helpTable("keys", keys, keyColour);
+            ImGui::Separator();
+            helpTable("mouse", mouse, mouseColour);
         }
         ImGui::TextDisabled("Every action is also in the side bar (Tab shows it).");
+        const ImVec2 size = ImGui::GetWindowSize();
+        w.helpSize = {size.x, size.y};
+        w.helpScrolls = ImGui::GetScrollMaxY() > 0.0f;
     }
     ImGui::End();
 }
@@ -238,8 +286,13 @@ void noteWindow(App& app, const char* name) {
 void placeFrame(App& app) {
     WorkspaceUi& w = app.work;
     if (w.sidebarWidth <= 0) w.sidebarWidth = static_cast<int>(kSidebarWidth * w.scale + 0.5f);
-    w.layout =
-        workspaceLayout(app.fbWidth, app.fbHeight, w.sidebarWidth, sidebarState(app), w.scale);
+    if (w.keepWidthAt < 0) w.keepWidthAt = app.fbWidth;
+    if (w.keepWidthAt > 0 && app.fbWidth != w.keepWidthAt) w.keepWidthAt = 0;  // resized
+    w.keepSidebar = w.keepWidthAt > 0;
+    const int width =
+        w.sidebarDragged || w.keepSidebar ? w.sidebarWidth : autoSidebarWidth(app.fbWidth, w.scale);
+    w.sidebarState = sidebarState(app);
+    w.layout = workspaceLayout(app.fbWidth, app.fbHeight, width, w.sidebarState, w.scale);
     const Rect& image = w.layout.image;
     const Camera& camera = app.model.prepareFrame(image.w, image.h);
     app.view = frameRect(w.layout, camera.width, camera.height);
@@ -253,6 +306,8 @@ void drawPanels(App& app) {
         compareOverlay(app);
     sceneFileEvents(app);
     errorPopup(app);
+    quitPopup(app);
+    saveDialog(app);
     switch (sidebarState(app)) {
         case SidebarState::Open:
             sidebar(app);

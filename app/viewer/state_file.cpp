@@ -53,6 +53,7 @@ std::string stateText(const ViewerModel& m, long long frames) {
     s << "view " << toString(m.settings.view) << "\n";
     s << "msaa " << m.settings.msaa << "\n";
     s << "renderer " << toString(m.rendererChoice) << "\n";
+    s << "unsaved " << (m.unsaved() ? 1 : 0) << "\n";
     return s.str();
 }
 

@@ -46,9 +46,20 @@ void onGlfwError(int, const char* description) {
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action != GLFW_PRESS) return;
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
-    // Ctrl+S saves even from a text field (the save path's own, typically).
+    // Ctrl+S saves even from a text field (the save path's own, typically); Ctrl+Q quits
+    // from anywhere, the quit question too.
     if (app && key == GLFW_KEY_S && (mods & GLFW_MOD_CONTROL)) {
         app->keys.saveScene = true;
+        return;
+    }
+    if (app && key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL)) {
+        app->work.actions.push_back(Action::Quit);
+        return;
+    }
+    // Esc closes the innermost thing, a modal pop-up too (which owns the keyboard), unless a
+    // text field is being edited: there it leaves the field.
+    if (app && key == GLFW_KEY_ESCAPE && !ImGui::GetIO().WantTextInput) {
+        app->work.actions.push_back(Action::Back);
         return;
     }
     // A text field being edited owns the keyboard (P is a letter, Esc leaves the field).
@@ -84,6 +95,14 @@ void onChar(GLFWwindow* window, unsigned codepoint) {
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
     if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
     if (const std::optional<Action> a = actionForChar(codepoint)) app->work.actions.push_back(*a);
+}
+
+/// The window's close button asks as Ctrl+Q does (askToQuit, in the next frame).
+void onClose(GLFWwindow* window) {
+    App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    if (!app) return;
+    glfwSetWindowShouldClose(window, GLFW_FALSE);
+    app->work.actions.push_back(Action::Quit);
 }
 
 void onContentScale(GLFWwindow* window, float, float) {
@@ -129,7 +148,7 @@ void showError(App& app, const std::string& title, const std::string& message) {
 void openScene(App& app, const std::string& path) {
     app.startupLoad = false;  // replaced: the command line's file is no longer coming
     app.ui.scenePath = path;
-    app.loading.start(path, kBareMeshWidth, kBareMeshHeight);
+    app.loading.start(path, app.model.openOptions());
 }
 
 void adoptScene(App& app, LoadedScene loaded) {
@@ -140,10 +159,12 @@ void adoptScene(App& app, LoadedScene loaded) {
         // it loads before the window opens (they were checked then).
         app.startupLoad = false;
         (void)applyOptions(app.options, app.model.settings);
+        app.model.markSaved();  // what the command line asked for is no unsaved change
     }
     app.ui.scenePath = path;
     app.ui.texturePath = app.model.scene.texturePath;
     app.ui.saveScenePath = defaultSavePath(path);
+    app.ui.saveChosen = false;  // a new scene: its first save asks where again
     if (app.window) glfwSetWindowTitle(app.window, windowTitle(app.model.scene).c_str());
 }
 
@@ -205,17 +226,22 @@ int App::run() {
                   options.texture.empty() && std::filesystem::is_regular_file(path, sizeError) &&
                   std::filesystem::file_size(path, sizeError) > kStartupLoadBytes &&
                   !defaultScenePath().empty();
+    if (const std::optional<UpAxis> up = parseUpAxis(options.up))
+        model.up = *up;
+    else if (!error)
+        error = Error{{}, "--up " + options.up + ": expected x, y or z"};
     if (!error) error = model.load(startupLoad ? defaultScenePath() : path);
     // After the load: the default scene shown meanwhile is not one the user opened.
     model.recentFile = configFolder().empty() ? "" : configFolder() + "/recent.txt";
     model.recent = readRecent(model.recentFile, kMaxRecent);
-    if (startupLoad) loading.start(path, kBareMeshWidth, kBareMeshHeight);
-    if (!error && !options.texture.empty()) {
-        error = model.loadTexture(options.texture);
-        applySceneDefaults(model.scene, model.bareMesh, model.settings);
-    }
+    // A file named on the command line is one the user opened (the default scene is not).
+    if (!error && !startupLoad && path != defaultScenePath()) model.rememberFile(path);
+    if (startupLoad) loading.start(path, model.openOptions());
+    // The same route as a texture chosen in the window (ViewerModel::loadTexture).
+    if (!error && !options.texture.empty()) error = model.loadTexture(options.texture);
     if (!error) error = applyOptions(options, model.settings);
-    if (error) {  // bad input is reported the same with or without a display
+    model.markSaved();  // the command line's choices are where the user starts
+    if (error) {        // bad input is reported the same with or without a display
         std::fprintf(stderr, "facet-view: %s\n", error->what().c_str());
         return 2;
     }
@@ -261,6 +287,8 @@ int App::run() {
     }
     work.scale = windowUiScale(*this);
     work.sidebarWidth = static_cast<int>(kSidebarWidth * work.scale + 0.5f);
+    // A window sized for the scene beside the full side bar keeps that layout until resized.
+    if (options.width <= 0 || options.height <= 0) work.keepWidthAt = -1;
     int width = 0, height = 0;
     initialWindowSize(options, model.sceneCamera, window, ui.showPanels ? work.sidebarWidth : 0,
                       width, height);
@@ -272,6 +300,7 @@ int App::run() {
     // Before ImGui's, which chain to them.
     glfwSetKeyCallback(window, onKey);
     glfwSetCharCallback(window, onChar);
+    glfwSetWindowCloseCallback(window, onClose);
     glfwSetWindowContentScaleCallback(window, onContentScale);
     installFileDrop(*this);
 

@@ -35,6 +35,9 @@ struct UiState {
     std::string folderError;
     std::string saveScenePath;         ///< where "Save scene" (Ctrl+S) writes
     std::string lastSave;              ///< what the last save wrote (or its error)
+    bool saveChosen = false;           ///< the save path was seen (dialog or field): Ctrl+S writes
+    bool saveDialogPending = false;    ///< the save dialog opens in the next frame
+    bool saveWindowSize = false;       ///< save the window's image size, not the scene's
     std::vector<std::string> dropped;  ///< paths dropped on the window since the last frame
     std::string iniPath;               ///< ImGui's layout file (kept alive for ImGui)
     std::string texturePath;           ///< the Texture panel's path field
@@ -55,6 +58,8 @@ struct UiState {
 struct DragState {
     int button = -1;       ///< ImGui mouse button, −1: none
     bool divider = false;  ///< the drag moves the Compare divider
+    float lastX = 0.0f;    ///< where the pointer was last frame (at the press on its first)
+    float lastY = 0.0f;
 };
 
 /// What the keys (key_map.hpp, dispatched by handleInput) asked the frame loop for.
@@ -127,8 +132,16 @@ void sceneFileEvents(App& app);
 /// Sends files dropped on the window to sceneFileEvents.
 void installFileDrop(App& app);
 
-/// Saves the scene shown to the Scene panel's save path (the button and Ctrl+S).
+/// Ctrl+S: the first time asks where (saveDialog, the scene's folder proposed), then writes to
+/// that path.
 void saveShownScene(App& app);
+
+/// Writes the scene shown to the save path (made absolute) and says where over the image; false
+/// (and the error popup) when it could not.
+bool writeShownScene(App& app);
+
+/// The first save's question: the path, the image size, Save or Cancel.
+void saveDialog(App& app);
 
 /// Loads a texture into the scene, or opens the error popup.
 void openTexture(App& app, const std::string& path);

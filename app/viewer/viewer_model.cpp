@@ -1,8 +1,11 @@
 #include "viewer_model.hpp"
 
 #include <cmath>
+
+#include <glm/geometric.hpp>
 #include <utility>
 
+#include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 #include "file_list.hpp"
 #include "scene_defaults.hpp"
@@ -10,7 +13,7 @@
 namespace facet::view {
 
 Status ViewerModel::load(const std::string& path) {
-    Result<LoadedScene> loaded = loadSceneOrMesh(path, kBareMeshWidth, kBareMeshHeight);
+    Result<LoadedScene> loaded = loadSceneOrMesh(path, openOptions());
     if (!loaded) return loaded.error();
     adopt(std::move(loaded).value());
     return std::nullopt;
@@ -22,14 +25,50 @@ void ViewerModel::adopt(LoadedScene loaded) {
     ++sceneVersion;
     sceneCamera = scene.camera;
     resetCamera();
-    applySceneDefaults(scene, bareMesh, settings);
+    applyOpeningSettings(scene, settings);
     rememberFile(loaded.path);
+    markSaved();
 }
 
-Status ViewerModel::saveScene(const std::string& path) {
-    if (Status error = writeScene(scene, path)) return error;
+Camera ViewerModel::userCamera() const {
+    Camera user = sceneCamera;
+    if (orbitMoved) applyPose(orbit, user);
+    if (focal > 0.0 && std::isfinite(focal)) user.focal = focal;
+    return user;
+}
+
+Status ViewerModel::saveScene(const std::string& path, bool windowSize) {
+    Scene out = scene;  // shares the mesh and texture
+    if (!windowSize) out.camera = userCamera();
+    if (Status error = writeScene(out, path)) return error;
     rememberFile(path);
+    markSaved();
     return std::nullopt;
+}
+
+DocumentState ViewerModel::documentState() const {
+    DocumentState d;
+    d.orbitMoved = orbitMoved;
+    if (orbitMoved) {
+        d.target = orbit.target;
+        d.vertical = orbit.vertical;
+        d.yaw = orbit.yaw;
+        d.pitch = orbit.pitch;
+        d.distance = orbit.distance;
+    }
+    d.focal = focal;
+    d.lighting = scene.lighting;
+    d.settings = settings;
+    d.texturePath = scene.texturePath;
+    return d;
+}
+
+void ViewerModel::markSaved() {
+    saved = documentState();
+}
+
+bool ViewerModel::unsaved() const {
+    return !(documentState() == saved);
 }
 
 void ViewerModel::rememberFile(const std::string& path) {
@@ -38,7 +77,47 @@ void ViewerModel::rememberFile(const std::string& path) {
 }
 
 Status ViewerModel::loadTexture(const std::string& path) {
-    return loadSceneTexture(scene, path);
+    if (Status error = loadSceneTexture(scene, path)) return error;
+    applyOpeningSettings(scene, settings);
+    return std::nullopt;
+}
+
+OpenOptions ViewerModel::openOptions() const {
+    return OpenOptions{kBareMeshWidth, kBareMeshHeight, up};
+}
+
+void ViewerModel::setUpAxis(UpAxis axis) {
+    up = axis;
+    if (bareMesh) {
+        // The scene as opening the mesh with this axis gives it (one copy of the mesh, once).
+        const Scene framed =
+            sceneForMesh(*scene.mesh, scene.meshPath, sceneCamera.width, sceneCamera.height, axis);
+        sceneCamera = framed.camera;
+        scene.lighting.light = framed.lighting.light;
+        resetCamera();
+        return;
+    }
+    // The view stays; yaw and pitch are measured about the new vertical from now on.
+    const Pose pose = orbitPose(orbit);
+    Orbit basis = orbit;
+    basis.vertical = upVector(axis);
+    const glm::dvec3 offset = pose.eye - pose.look;
+    const glm::dvec3 flat = offset - glm::dot(offset, basis.vertical) * basis.vertical;
+    const double n = glm::length(flat);
+    if (n > 1e-9 * glm::length(offset))
+        basis.reference = flat / n;
+    else  // looking straight along the axis: any direction across it
+        basis.reference = glm::normalize(glm::cross(basis.vertical, std::abs(basis.vertical.x) < 0.6
+                                                                        ? glm::dvec3(1, 0, 0)
+                                                                        : glm::dvec3(0, 1, 0)));
+    orbit = orbitMeasure(basis, pose.eye, pose.look);
+    orbitMoved = true;
+}
+
+std::optional<UpAxis> ViewerModel::orbitAxis() const {
+    for (const UpAxis a : {UpAxis::X, UpAxis::Y, UpAxis::Z})
+        if (std::abs(glm::dot(orbit.vertical, upVector(a))) > 0.9999) return a;
+    return std::nullopt;
 }
 
 void ViewerModel::resetCamera() {
@@ -68,10 +147,7 @@ void ViewerModel::orbitEdited() {
 }
 
 const Camera& ViewerModel::prepareFrame(int windowWidth, int windowHeight) {
-    Camera user = sceneCamera;
-    if (orbitMoved) applyPose(orbit, user);
-    if (focal > 0.0 && std::isfinite(focal)) user.focal = focal;
-    scene.camera = frameCamera(user, sizePolicy, windowWidth, windowHeight);
+    scene.camera = frameCamera(userCamera(), sizePolicy, windowWidth, windowHeight);
     return scene.camera;
 }
 

@@ -18,6 +18,17 @@ int clampSidebarWidth(int width, int windowWidth, double scale) {
     return std::max(0, std::min(most, std::max(least, width)));
 }
 
+int autoSidebarWidth(int windowWidth, double scale) {
+    const int full = scaled(kSidebarWidth, scale);
+    const int least = scaled(kSidebarMinWidth, scale);
+    const int share = static_cast<int>(kSidebarShare * std::max(0, windowWidth));
+    return std::min(full, std::max(least, share));
+}
+
+bool autoCollapsed(int windowWidth, double scale) {
+    return windowWidth < scaled(kCollapseBelow, scale);
+}
+
 Workspace workspaceLayout(int windowWidth, int windowHeight, int sidebarWidth, SidebarState state,
                           double scale) {
     Workspace w;

@@ -22,6 +22,20 @@ inline constexpr int kSidebarCollapsedWidth = 32;  // ImGui's least window width
 /// The image area never gets narrower than this share of the window when the bar is dragged.
 inline constexpr double kMinImageShare = 0.3;
 
+/// Until the user drags its edge, the side bar takes at most this share of the window's width
+/// (never less than kSidebarMinWidth): a small window keeps most of its area for the picture.
+inline constexpr double kSidebarShare = 0.34;
+
+/// Below this window width (at a UI scale of 1) the side bar starts collapsed to its strip.
+inline constexpr int kCollapseBelow = 640;
+
+/// The side bar's width before the user drags it: kSidebarWidth·scale, narrowed to
+/// kSidebarShare of a smaller window, never under kSidebarMinWidth·scale.
+int autoSidebarWidth(int windowWidth, double scale);
+
+/// True when a window this wide starts with the side bar collapsed (kCollapseBelow).
+bool autoCollapsed(int windowWidth, double scale);
+
 /// Where the side bar and the image area are in a window.
 struct Workspace {
     Rect sidebar;  ///< empty when hidden

@@ -26,7 +26,10 @@ std::string workspaceStateText(const App& app) {
     s << "window " << app.fbWidth << " " << app.fbHeight << "\n";
     s << "view " << rect(app.view) << "\n";
     s << "image_area " << rect(w.layout.image) << "\n";
-    s << "sidebar " << (app.ui.showPanels ? (w.collapsed ? "collapsed" : "open") : "hidden")
+    s << "sidebar "
+      << (w.sidebarState == SidebarState::Hidden      ? "hidden"
+          : w.sidebarState == SidebarState::Collapsed ? "collapsed"
+                                                      : "open")
       << "\n";
     for (const auto& [name, r] : w.drawn) s << "window_" << name << " " << rect(r) << "\n";
     char loading[32];  // a load in flight (1) and its fraction, or 0 0
@@ -34,6 +37,7 @@ std::string workspaceStateText(const App& app) {
                   app.loading.progress());
     s << "loading " << loading << "\n";
     s << "help " << (w.help ? 1 : 0) << "\n";
+    s << "help_scrolls " << (w.helpScrolls ? 1 : 0) << "\n";
     s << "stats_overlay " << (w.statsOverlay ? 1 : 0) << "\n";
     s << "fullscreen " << (w.fullscreen ? 1 : 0) << "\n";
     char scale[32];
@@ -55,6 +59,8 @@ std::string workspaceStateText(const App& app) {
                   app.view.y + at.y * app.view.h / std::max(1, c.height),
                   markerInFrame(m, c.width, c.height) ? 1 : 0);
     s << "light_marker " << marker << "\n";
+    s << "light_marker_note " << w.markerNote << "\n";
+    s << "light_marker_note_rect " << rect(w.markerNoteRect) << "\n";
     return s.str();
 }
 

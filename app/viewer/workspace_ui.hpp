@@ -39,11 +39,20 @@ enum class LightDrag {
 /// Side bar, overlays and the rest of the workspace between frames.
 struct WorkspaceUi {
     bool collapsed = false;       ///< the side bar is the thin strip (Tab hides it: UiState)
+    bool collapseChosen = false;  ///< << or >> was clicked: a narrow window no longer decides
+    bool sidebarDragged = false;  ///< the user set the width (its edge): no longer automatic
+    /// The framebuffer width the window opened with when the viewer sized it for the scene
+    /// beside the full side bar (−1: the first frame sets it; 0: none, or resized since): at
+    /// that width the side bar keeps its full width and stays open.
+    int keepWidthAt = 0;
+    bool keepSidebar = false;     ///< this frame: the opening layout is kept (keepWidthAt)
     int sidebarWidth = 0;         ///< pixels when open; 0 until the first frame sets the default
     bool sidebarSizeSet = false;  ///< the side bar's width must be (re)applied next frame
     float scale = 1.0f;           ///< UI scale: the monitor's content scale, or --ui-scale
     bool scaleChanged = false;    ///< the monitor's scale changed: rebuild fonts and style
     bool help = false;            ///< the keys and mouse overlay shows
+    glm::vec2 helpSize{0.0f};     ///< the help's size last frame
+    bool helpScrolls = false;     ///< the help did not fit the window (it scrolls)
     bool statsOverlay = true;     ///< the compact stats in the image's corner (S)
     bool lightMarker = true;      ///< the light's marker in the picture, when lighting is on (M)
     bool fullscreen = false;
@@ -51,9 +60,14 @@ struct WorkspaceUi {
     bool accuracyTable = false;           ///< the ground-truth table's window is open
     std::uint64_t accuracyTableSeen = 0;  ///< reports for which the table opened by itself
     std::vector<Action> actions;          ///< keys pressed since the last frame, in order
+    bool quitAsked = false;    ///< the quit question is open: the next Ctrl+Q or close quits
+    bool quitPending = false;  ///< the quit question opens in the next frame
     Notice notice;
     LightDrag lightDrag = LightDrag::None;
-    Workspace layout;   ///< this frame's side bar and image area
+    std::string markerNote;  ///< the words beside an off-screen light's marker, this frame
+    Rect markerNoteRect;     ///< where they are drawn (window pixels), empty when none
+    Workspace layout;        ///< this frame's side bar and image area
+    SidebarState sidebarState = SidebarState::Open;  ///< this frame's (a narrow window collapses)
     Backdrop backdrop;  ///< the side bar's background, left to GlFrame (empty: ImGui draws it)
     std::map<std::string, Rect> drawn;  ///< windows drawn this frame, by name (for --state)
 };
@@ -104,6 +118,13 @@ void applyUiStyle(float scale, bool rebuild);
 /// The UI scale of the window: --ui-scale when given, else its monitor's content scale
 /// (glfwGetWindowContentScale) over the framebuffer's scale, within 0.5…4.
 float windowUiScale(const App& app);
+
+/// Ctrl+Q or the window's close button: quits, or first asks once when the scene has unsaved
+/// changes (ViewerModel::unsaved).
+void askToQuit(App& app);
+
+/// The question askToQuit opens: save and quit, quit without saving, or cancel (Esc).
+void quitPopup(App& app);
 
 /// Fullscreen on the monitor under the window, or back to the window it was.
 void toggleFullscreen(App& app);

@@ -111,12 +111,18 @@ void drawBar(Framebuffer& frame, std::string_view title, int bands, std::span<co
         fillRect(frame, barX + i, barY, 1, barH, packUnit(viridis(t)));
     }
     const int textY = barY + barH + margin;
-    for (const TickText& tick : ticks) {
+    // From the right: the last tick (the top of the scale) always shows; one that would touch
+    // the label to its right is left out ("10000100000" read as one number).
+    int rightmost = barX + barW + 2 * scale;  // the left edge of the label drawn last
+    for (std::size_t i = ticks.size(); i-- > 0;) {
+        const TickText& tick = ticks[i];
         const int w = textWidth(tick.text, scale);
         const int centre = barX + static_cast<int>(std::lround(std::clamp(tick.t, 0.0, 1.0) *
                                                                static_cast<double>(barW - 1)));
         const int x = std::max(barX, std::min(centre - w / 2, barX + barW - w));
+        if (x + w + 2 * scale > rightmost) continue;
         drawText(frame, x, textY, tick.text, scale, kWhite);
+        rightmost = x;
     }
 }
 
