@@ -112,7 +112,9 @@ TEST_F(ViewerGui, ADraggedLightStaysOnTheCamerasSide) {
     double mx = 0.0, my = 0.0;
     marker >> shown >> mx >> my >> inFrame;
     ASSERT_EQ(shown, 1) << state.at("light_marker");
-    if (!inFrame) EXPECT_NE(state.at("light_marker_note"), "");
+    if (!inFrame) {
+        EXPECT_NE(state.at("light_marker_note"), "");
+    }
     // From the marker across the image's centre to as far on the other side.
     const Rect view = rectOf(state, "view");
     const double cx = view.x + 0.5 * view.w, cy = view.y + 0.5 * view.h;
