@@ -71,8 +71,9 @@ void measureEngine(const BenchOptions& o, const BenchSuite& suite, int threads, 
             if (!o.images.empty()) {
                 const std::string name =
                     c.name + "_" + config.name + "_engine_t" + std::to_string(threads) + ".png";
-                if (Status st = writePng(frame, (std::filesystem::path(o.images) / name).string()))
-                    std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
+                if (Status st = writePng(frame, (std::filesystem::path(o.images) / name).string());
+                    !st)
+                    std::fprintf(stderr, "facet bench: %s\n", st.error().what().c_str());
             }
         }
 }
@@ -90,11 +91,11 @@ bool measureOpenGl(const BenchOptions& o, const BenchSuite& suite, int threads, 
         if (const BenchCase* c = findCase(suite, name))
             results.all.push_back(measurement(*c, config, kOpenGl, threads, t));
     };
-    if (Status st = runGlPeerProcess(o, threads, events)) {
+    if (Status st = runGlPeerProcess(o, threads, events); !st) {
         progress.fail();
         std::fprintf(stderr, "facet bench: OpenGL with LP_NUM_THREADS=%d: %s\n", threads,
-                     st->what().c_str());
-        if (results.glRenderer.empty()) results.glRenderer = "unavailable: " + st->what();
+                     st.error().what().c_str());
+        if (results.glRenderer.empty()) results.glRenderer = "unavailable: " + st.error().what();
         return false;
     }
     return true;
@@ -105,10 +106,10 @@ int runBench(const BenchOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const MachineInfo machine = collectMachineInfo();
     // Say at once that the chart will fail, rather than after minutes of measuring.
-    Status gnuplot = o.chart.empty() ? std::nullopt : checkGnuplot(o.gnuplot);
-    if (gnuplot)
+    Status gnuplot = o.chart.empty() ? Status{} : checkGnuplot(o.gnuplot);
+    if (!gnuplot)
         std::fprintf(stderr, "facet bench: warning: %s; the table and CSV will still be written\n",
-                     gnuplot->what().c_str());
+                     gnuplot.error().what().c_str());
     Result<BenchSuite> built = buildSuite(o);
     if (!built) {
         std::fprintf(stderr, "facet bench: %s\n", built.error().what().c_str());
@@ -155,8 +156,8 @@ int runBench(const BenchOptions& o) {
         const RunDescription run{
             std::string(o.scaling ? "scaling" : "suite") + (o.quick ? ", quick" : ""), threads,
             framePlan(o)};
-        if (Status st = writeBenchCsv(o.csv, machine, run, suite, results)) {
-            std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
+        if (Status st = writeBenchCsv(o.csv, machine, run, suite, results); !st) {
+            std::fprintf(stderr, "facet bench: %s\n", st.error().what().c_str());
             code = kFailed;
         }
     }
@@ -166,11 +167,11 @@ int runBench(const BenchOptions& o) {
                                    machine.cpu + ", " + std::to_string(machine.cores) +
                                    " cores; OpenGL " + results.glRenderer + "; " + machine.date,
                                threads};
-        Status st = gnuplot     ? gnuplot
+        Status st = !gnuplot    ? gnuplot
                     : o.scaling ? writeScalingChart(req, suite, results)
                                 : writeSuiteChart(req, suite, results);
-        if (st) {
-            std::fprintf(stderr, "facet bench: --chart: %s\n", st->what().c_str());
+        if (!st) {
+            std::fprintf(stderr, "facet bench: --chart: %s\n", st.error().what().c_str());
             code = kFailed;
         }
     }

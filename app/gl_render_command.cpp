@@ -50,7 +50,7 @@ int runGlRender(const RenderOptions& o) {
         last = stats.value();
         ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     }
-    if (Status st = writePng(frame, o.output)) return failed(st->what());
+    if (Status st = writePng(frame, o.output); !st) return failed(st.error().what());
     std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s) with %s\n", o.output.c_str(),
                 frame.width, frame.height, o.mode.c_str(), o.shader.c_str(), o.interp.c_str(),
                 std::string(toString(settings.lighting)).c_str(), context->description().c_str());

@@ -29,12 +29,17 @@ int runRender(const RenderOptions& o) {
     std::vector<double> ms;
     for (int i = 0; i < std::max(1, o.frames); ++i) {
         const auto t0 = std::chrono::steady_clock::now();
-        stats = renderer.render(scene, settings, frame);
+        Result<RenderStats> rendered = renderer.render(scene, settings, frame);
         const auto t1 = std::chrono::steady_clock::now();
+        if (!rendered) {
+            std::fprintf(stderr, "facet render: %s\n", rendered.error().what().c_str());
+            return kBadInput;
+        }
+        stats = rendered.value();
         ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     }
-    if (Status st = writePng(frame, o.output)) {
-        std::fprintf(stderr, "facet render: %s\n", st->what().c_str());
+    if (Status st = writePng(frame, o.output); !st) {
+        std::fprintf(stderr, "facet render: %s\n", st.error().what().c_str());
         return kFailed;
     }
     std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s%s%s)\n", o.output.c_str(), frame.width,

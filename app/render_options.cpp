@@ -9,6 +9,7 @@
 #include "facet/camera.hpp"
 #include "facet/evaluation/frame_times.hpp"
 #include "facet/limits.hpp"
+#include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 
 namespace facet::app {
@@ -167,7 +168,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.lighting = o.lighting.empty() ? (bareMesh ? Lighting::Gouraud : Lighting::Off)
                                            : *parseLighting(o.lighting);
     if (!o.texture.empty()) {
-        if (Status st = loadSceneTexture(scene, o.texture)) return bad(st->what());
+        if (Status st = loadSceneTexture(scene, o.texture); !st) return bad(st.error().what());
     }
     if (settings.shader == ShaderKind::Texture && !scene.texture)
         return bad(o.scene +
@@ -180,13 +181,12 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
                      command, scene.meshPath.c_str());
     if (!bareMesh && w > 0)
         scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
-    // Refused before the renderer allocates anything (limits.hpp).
-    if (auto problem = frameMemoryProblem(scene.camera.width, scene.camera.height,
-                                          settings.supersample, settings.msaa))
-        return bad(*problem);
+    // Refused before --write-scene and before the renderer allocates anything: the engine's
+    // own check (Renderer::render makes the same), so the messages are the library's.
+    if (Status st = checkFrame(scene.camera, settings); !st) return bad(st.error().what());
     if (!o.writeScene.empty()) {
-        if (Status st = writeScene(scene, o.writeScene)) {
-            std::fprintf(stderr, "%s: %s\n", command, st->what().c_str());
+        if (Status st = writeScene(scene, o.writeScene); !st) {
+            std::fprintf(stderr, "%s: %s\n", command, st.error().what().c_str());
             return kFailed;
         }
     }

@@ -50,7 +50,7 @@ std::string data(const std::string& name) {
 ViewerModel loadedModel() {
     ViewerModel m;
     const Status error = m.load(kDefaultScene);
-    EXPECT_FALSE(error) << error->what();
+    EXPECT_TRUE(error) << error.error().what();
     m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
     m.render();
     return m;
@@ -109,10 +109,11 @@ TEST(ViewerModel, MalformedScenesKeepTheOldOne) {
           "scene_missing_mesh.scene", "scene_bad_mesh.scene", "scene_truncated.scene",
           "scene_corrupt_texture.scene", "no_such_file.scene"}) {
         const Status error = m.load(data(bad));
-        ASSERT_TRUE(error) << bad << " loaded";
+        ASSERT_FALSE(error) << bad << " loaded";
         // The popup shows "file:line: message" (or "file: message") naming the file at fault,
         // the scene or the mesh it names.
-        EXPECT_NE(error->what().find("tests/data/"), std::string::npos) << error->what();
+        EXPECT_NE(error.error().what().find("tests/data/"), std::string::npos)
+            << error.error().what();
         EXPECT_EQ(m.scene.path, path) << bad;
         EXPECT_EQ(m.scene.mesh->triangleCount(), triangles) << bad;
         m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
@@ -120,20 +121,20 @@ TEST(ViewerModel, MalformedScenesKeepTheOldOne) {
         EXPECT_TRUE(m.frame.color == before) << bad << " changed the picture";
     }
     EXPECT_EQ(m.recent.size(), 1u);  // failures never join the recent list
-    EXPECT_FALSE(m.load(data("scene_valid.scene")));
+    EXPECT_TRUE(m.load(data("scene_valid.scene")));
     EXPECT_EQ(m.recent.size(), 2u);
     EXPECT_EQ(m.scene.camera.width, 320);
 }
 
 TEST(ViewerModel, ABadTextureKeepsTheOldOne) {
     ViewerModel m;
-    ASSERT_FALSE(m.load(data("scene_texture.scene")));
+    ASSERT_TRUE(m.load(data("scene_texture.scene")));
     ASSERT_TRUE(m.scene.texture);
     const Texture* before = m.scene.texture.get();
-    EXPECT_TRUE(m.loadTexture(data("tex_not_an_image.png")));
-    EXPECT_TRUE(m.loadTexture(data("no_such_texture.png")));
+    EXPECT_FALSE(m.loadTexture(data("tex_not_an_image.png")));
+    EXPECT_FALSE(m.loadTexture(data("no_such_texture.png")));
     EXPECT_EQ(m.scene.texture.get(), before);
-    EXPECT_FALSE(m.loadTexture(data("tex_4x4.png")));
+    EXPECT_TRUE(m.loadTexture(data("tex_4x4.png")));
     EXPECT_NE(m.scene.texture.get(), before);
     EXPECT_EQ(m.scene.texture->width(), 4);
 }
@@ -150,7 +151,7 @@ TEST(ViewerModel, FilesReplacedOnDiskKeepTheLastGoodScene) {
         fs::copy_file(data(name), dir / name, fs::copy_options::overwrite_existing);
     const std::string scenePath = (dir / "scene_texture.scene").string();
     ViewerModel m;
-    ASSERT_FALSE(m.load(scenePath));
+    ASSERT_TRUE(m.load(scenePath));
     m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
     const std::vector<std::uint32_t> before = m.render().color;
     const std::size_t triangles = m.scene.mesh->triangleCount();
@@ -164,8 +165,9 @@ TEST(ViewerModel, FilesReplacedOnDiskKeepTheLastGoodScene) {
         m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
         EXPECT_TRUE(m.render().color == before) << what << " changed the picture";
         const Status error = m.load(scenePath);
-        ASSERT_TRUE(error) << what << ": reopening succeeded";
-        EXPECT_NE(error->what().find(fileAtFault), std::string::npos) << error->what();
+        ASSERT_FALSE(error) << what << ": reopening succeeded";
+        EXPECT_NE(error.error().what().find(fileAtFault), std::string::npos)
+            << error.error().what();
         EXPECT_EQ(m.scene.texture.get(), texture) << what;
         EXPECT_EQ(m.scene.mesh->triangleCount(), triangles) << what;
         m.prepareFrame(m.sceneCamera.width, m.sceneCamera.height);
@@ -193,7 +195,7 @@ TEST(ViewerModel, FilesReplacedOnDiskKeepTheLastGoodScene) {
     expectKept("a truncated mesh", off);
     // Put back, the scene opens again.
     replace("mesh_square.off", mesh);
-    EXPECT_FALSE(m.load(scenePath));
+    EXPECT_TRUE(m.load(scenePath));
     std::error_code ec;
     fs::remove_all(dir, ec);
 }
@@ -360,7 +362,7 @@ TEST(ViewerOptions, ParsesTheTestAndBenchmarkOptions) {
     EXPECT_EQ(o.statePath, "s.txt");
     EXPECT_EQ(o.texture, "t.png");
     RenderSettings s;
-    ASSERT_FALSE(applyOptions(o, s));
+    ASSERT_TRUE(applyOptions(o, s));
     EXPECT_EQ(s.shader, ShaderKind::Texture);
     EXPECT_EQ(s.interp, Interp::Subdivided);
     EXPECT_EQ(s.subdivision, 8);
@@ -494,7 +496,7 @@ TEST(ViewerState, TextHoldsTheViewLightAndMaterial) {
     EXPECT_EQ(parseState(stateText(m, 1)).at("view"), "bin-load");
     m.rendererChoice = RendererChoice::Split;
     EXPECT_EQ(parseState(stateText(m, 1)).at("renderer"), "split");
-    EXPECT_TRUE(writeTextFile("/no/such/folder/state.txt", "x"));
+    EXPECT_FALSE(writeTextFile("/no/such/folder/state.txt", "x"));
 }
 
 TEST(ViewerState, TheRendererLogStaysOneLinePerKey) {
@@ -594,20 +596,20 @@ fs::path scratchFolder() {
 TEST(ViewerModels, ABareMeshOpensLitAndATexturedSceneWithItsTexture) {
     if (!fs::exists(kSpotScene)) GTEST_SKIP() << "shared data not found";
     ViewerModel m;
-    ASSERT_FALSE(m.load(kModels + "/teapot.obj"));
+    ASSERT_TRUE(m.load(kModels + "/teapot.obj"));
     EXPECT_TRUE(m.bareMesh);
     EXPECT_EQ(m.sceneCamera.width, kBareMeshWidth);
     EXPECT_EQ(m.settings.lighting, Lighting::Gouraud);
     EXPECT_EQ(m.settings.shader, ShaderKind::Painter);
 
-    ASSERT_FALSE(m.load(kSpotScene));
+    ASSERT_TRUE(m.load(kSpotScene));
     EXPECT_FALSE(m.bareMesh);
     EXPECT_EQ(m.settings.shader, ShaderKind::Texture);
     EXPECT_TRUE(m.settings.combine);
     EXPECT_EQ(m.settings.lighting, Lighting::Gouraud);
     EXPECT_EQ(noEffectNote(m.scene, m.settings), "");
 
-    ASSERT_FALSE(m.load(kDefaultScene));  // no texture: the course's unlit painter
+    ASSERT_TRUE(m.load(kDefaultScene));  // no texture: the course's unlit painter
     EXPECT_EQ(m.settings.shader, ShaderKind::Painter);
     EXPECT_EQ(m.settings.lighting, Lighting::Off);
 }
@@ -615,7 +617,7 @@ TEST(ViewerModels, ABareMeshOpensLitAndATexturedSceneWithItsTexture) {
 TEST(ViewerModels, LightingUnderTheTextureShaderTurnsCombineOnOrSaysWhy) {
     if (!fs::exists(kSpotScene)) GTEST_SKIP() << "shared data not found";
     ViewerModel m;
-    ASSERT_FALSE(m.load(kSpotScene));
+    ASSERT_TRUE(m.load(kSpotScene));
     RenderSettings& s = m.settings;
     s.combine = false;
     s.lighting = Lighting::Off;
@@ -632,7 +634,7 @@ TEST(ViewerModels, LightingUnderTheTextureShaderTurnsCombineOnOrSaysWhy) {
     s.lighting = Lighting::Off;
     EXPECT_EQ(m.render().color, lit);
 
-    ASSERT_FALSE(m.load(kModels + "/cow.obj"));
+    ASSERT_TRUE(m.load(kModels + "/cow.obj"));
     s.shader = ShaderKind::Texture;
     EXPECT_NE(noEffectNote(m.scene, s).find("no texture"), std::string::npos);
 }
@@ -642,14 +644,14 @@ TEST(ViewerModels, SavedAfterOrbitingTheFrameRendersByteForByte) {
     for (const std::string& file : {kModels + "/cow.obj", kSpotScene}) {
         if (!fs::exists(file)) GTEST_SKIP() << file << " not found";
         ViewerModel m;
-        ASSERT_FALSE(m.load(file));
+        ASSERT_TRUE(m.load(file));
         m.rotate(37.0, -12.0);
         m.zoom(1.5);
         m.pan(5.0, 3.0);
         m.prepareFrame(800, 500);  // the window's size, not the scene's
         const Framebuffer shown = m.render();
         const std::string saved = (dir / (fs::path(file).stem().string() + ".scene")).string();
-        ASSERT_FALSE(m.saveScene(saved));
+        ASSERT_TRUE(m.saveScene(saved));
         EXPECT_EQ(m.recent.front(), fs::absolute(saved).lexically_normal().string());
 
         Result<Scene> back = loadScene(saved);
@@ -705,10 +707,10 @@ TEST(ViewerModels, ADropOpensMeshesAndScenesTexturesImagesAndRefusesTheRest) {
 
     // What the viewer then does with it: the mesh opens, the image textures Spot.
     ViewerModel m;
-    ASSERT_FALSE(m.load(plan.open));
+    ASSERT_TRUE(m.load(plan.open));
     EXPECT_TRUE(m.bareMesh);
-    ASSERT_FALSE(m.load(kModels + "/spot_triangulated.obj"));
-    ASSERT_FALSE(m.loadTexture(plan.texture));
+    ASSERT_TRUE(m.load(kModels + "/spot_triangulated.obj"));
+    ASSERT_TRUE(m.loadTexture(plan.texture));
     EXPECT_TRUE(m.scene.texture);
     fs::remove_all(dir);
 }
@@ -730,8 +732,8 @@ TEST(ViewerModels, RecentFilesAndTheConfigFolderSurviveARestart) {
     {
         ViewerModel m;
         m.recentFile = file;
-        ASSERT_FALSE(m.load(kDefaultScene));
-        ASSERT_FALSE(m.load(kModels + "/cow.obj"));
+        ASSERT_TRUE(m.load(kDefaultScene));
+        ASSERT_TRUE(m.load(kModels + "/cow.obj"));
     }
     ViewerModel next;  // a new run
     next.recent = readRecent(file, kMaxRecent);
@@ -746,7 +748,7 @@ TEST(ViewerModels, LoadingRunsOnAWorkerAndCancelOrFailureKeepsTheOldScene) {
     const std::string nefertiti = kModels + "/nefertiti.obj";
     if (!fs::exists(nefertiti)) GTEST_SKIP() << nefertiti << " not found";
     ViewerModel m;
-    ASSERT_FALSE(m.load(kDefaultScene));
+    ASSERT_TRUE(m.load(kDefaultScene));
     const std::size_t before = m.scene.mesh->triangleCount();
 
     LoadJob job;

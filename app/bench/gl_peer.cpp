@@ -60,7 +60,7 @@ int runGlPeer(const BenchOptions& o) {
             if (!o.images.empty()) {
                 const auto path = std::filesystem::path(o.images) /
                                   (c.name + "_" + config.name + "_" + tag + ".png");
-                if (Status st = writePng(frame, path.string())) return fail(st->what());
+                if (Status st = writePng(frame, path.string()); !st) return fail(st.error().what());
             }
         }
     return kOk;

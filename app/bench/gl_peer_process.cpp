@@ -124,7 +124,7 @@ Status runGlPeerProcess(const BenchOptions& o, int lpThreads, const PeerEvents& 
                      WIFSIGNALED(status)
                          ? "killed by signal " + std::to_string(WTERMSIG(status))
                          : "exited with status " + std::to_string(WEXITSTATUS(status))};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet::app

@@ -148,7 +148,7 @@ Status drawNormals(RendererState& s, const Scene& scene, const RenderSettings& s
                                                      : normalDisplayLength(mesh);
     normalSegments(mesh, normals, length, s.segments);
     stats.normalsDrawn = s.segments.size() / 2;
-    if (s.segments.empty()) return std::nullopt;
+    if (s.segments.empty()) return {};
     const Variant lines{.mode = DrawMode::Wireframe};
     const Result<GLuint> program = programFor(s, definesFor(lines, s.clipControl));
     if (!program) return program.error();
@@ -158,7 +158,7 @@ Status drawNormals(RendererState& s, const Scene& scene, const RenderSettings& s
     useProgram(program.value(), u, glm::vec3(1.0f, 0.0f, 0.0f));
     s.normals.bind();
     drawLines(false, s.segments.size(), s.segments.size());
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
@@ -228,7 +228,7 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
     const StateGuard guard(s.clipControl);
     // Multisampling as the engine does it: triangles only (Solid mode).
     const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
-    if (Status st = s.target.resize(cam.width, cam.height, samples)) return *st;
+    if (Status st = s.target.resize(cam.width, cam.height, samples); !st) return st.error();
     frame.resize(cam.width, cam.height);
 
     const Variant v = variantFor(settings, mesh);
@@ -291,7 +291,7 @@ Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& set
             s.target.readDepth(s.rangeDepth, nearPlane);
             s.target.bind();
         }
-        if (Status st = drawNormals(s, scene, settings, normals, u, stats)) return *st;
+        if (Status st = drawNormals(s, scene, settings, normals, u, stats); !st) return st.error();
     }
     // The draw's time is the CPU clock up to glFinish: on llvmpipe that is exactly the work
     // (its GL_TIME_ELAPSED queries came back as noise: 0.5–3.8 ms for a 12 ms draw, and

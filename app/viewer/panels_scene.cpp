@@ -90,9 +90,9 @@ void installFileDrop(App& app) {
 
 void saveShownScene(App& app) {
     if (app.ui.saveScenePath.empty()) return;
-    if (Status error = app.model.saveScene(app.ui.saveScenePath)) {
-        app.ui.lastSave = error->what();
-        showError(app, "Cannot save the scene", error->what());
+    if (Status error = app.model.saveScene(app.ui.saveScenePath); !error) {
+        app.ui.lastSave = error.error().what();
+        showError(app, "Cannot save the scene", error.error().what());
         return;
     }
     app.ui.lastSave = "saved " + app.ui.saveScenePath;

@@ -13,7 +13,7 @@ Status ViewerModel::load(const std::string& path) {
     Result<LoadedScene> loaded = loadSceneOrMesh(path, kBareMeshWidth, kBareMeshHeight);
     if (!loaded) return loaded.error();
     adopt(std::move(loaded).value());
-    return std::nullopt;
+    return {};
 }
 
 void ViewerModel::adopt(LoadedScene loaded) {
@@ -27,9 +27,9 @@ void ViewerModel::adopt(LoadedScene loaded) {
 }
 
 Status ViewerModel::saveScene(const std::string& path) {
-    if (Status error = writeScene(scene, path)) return error;
+    if (Status error = writeScene(scene, path); !error) return error;
     rememberFile(path);
-    return std::nullopt;
+    return {};
 }
 
 void ViewerModel::rememberFile(const std::string& path) {
@@ -76,7 +76,9 @@ const Camera& ViewerModel::prepareFrame(int windowWidth, int windowHeight) {
 }
 
 const Framebuffer& ViewerModel::render() {
-    stats = renderer.render(scene, settings, frame);
+    // A refused frame (checkFrame: the camera, the size) keeps the last image, with no stats.
+    Result<RenderStats> rendered = renderer.render(scene, settings, frame);
+    stats = rendered ? rendered.value() : RenderStats{};
     return frame;
 }
 

@@ -20,7 +20,7 @@ Status writePng(const std::uint32_t* rgba, int width, int height, const std::str
     }
     if (!stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3))
         return Error{{path, 0}, "cannot write PNG (is the folder there and writable?)"};
-    return std::nullopt;
+    return {};
 }
 
 Status writePng(const Framebuffer& frame, const std::string& path) {

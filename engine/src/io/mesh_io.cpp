@@ -88,7 +88,7 @@ Status writeOff(const Mesh& mesh, const std::string& path) {
     const bool written = std::fwrite(out.data(), 1, out.size(), file) == out.size();
     const bool closed = std::fclose(file) == 0;
     if (!written || !closed) return Error{{path, 0}, "cannot write file (disk full?)"};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet

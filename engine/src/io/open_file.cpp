@@ -235,11 +235,12 @@ Result<Scene> openSceneFile(const std::string& path, const OpenOptions& options,
             Scene scene = sceneForMesh(std::move(*mesh), path, width, height, options.up);
             const LoadControl textureControl = meter.sub(meshShare, 1.0f);
             if (!mapKd.empty()) {
-                if (Status st =
-                        loadSceneTexture(scene, mapKd, control ? &textureControl : nullptr)) {
-                    if (st->cancelled) return *st;
-                    return Error{{path, 0},
-                                 "cannot load the map_Kd texture of its material: " + st->what()};
+                if (Status st = loadSceneTexture(scene, mapKd, control ? &textureControl : nullptr);
+                    !st) {
+                    if (st.error().cancelled) return st.error();
+                    return Error{
+                        {path, 0},
+                        "cannot load the map_Kd texture of its material: " + st.error().what()};
                 }
             }
             if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);
