@@ -2,10 +2,12 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include <unistd.h>
 
 #include "commands.hpp"
+#include "facet/version.hpp"
 
 namespace {
 
@@ -30,6 +32,8 @@ int main(int argc, char** argv) {
     CLI::App app{"facet: a software rasterizer. Renders .scene files (course format) to PNG."};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Help for every sub-command");
+    app.set_version_flag("--version", std::string("facet ") + facet::kVersionString,
+                         "Print facet's version and exit");
     int exitCode = facet::app::kOk;
     facet::app::addRenderCommand(app, exitCode);
     facet::app::addGenerateCommand(app, exitCode);
@@ -45,6 +49,9 @@ int main(int argc, char** argv) {
         return facet::app::kOk;
     } catch (const CLI::CallForAllHelp&) {
         std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+        return facet::app::kOk;
+    } catch (const CLI::CallForVersion& e) {
+        std::printf("%s\n", e.what());
         return facet::app::kOk;
     } catch (const CLI::ParseError& e) {
         // Help for a sub-command arrives as CallForHelp from the sub-command itself.

@@ -20,6 +20,7 @@
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
 #include "facet/texture.hpp"
+#include "facet/version.hpp"
 #include "run_process.hpp"
 #include "shared_data.hpp"
 
@@ -209,6 +210,13 @@ TEST_F(Cli, HelpListsTheOptions) {
                             "--background", "--texture", "--filter", "--combine", "--normals",
                             "--normal-length", "--legend", "subdivided", "--view", "bin-load"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+TEST_F(Cli, VersionPrintsTheProjectVersion) {
+    const Outcome r = run("--version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, std::string("facet ") + facet::kVersionString + "\n");
+    EXPECT_NE(run("--help").out.find("--version"), std::string::npos);
 }
 
 // --view NAME writes the debug view: the PNG holds exactly the image Renderer::render() makes
