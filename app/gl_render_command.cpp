@@ -52,7 +52,8 @@ int runGlRender(const RenderOptions& o) {
     }
     if (Status st = writePng(frame, o.output); !st) return failed(st.error().what());
     std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s) with %s\n", o.output.c_str(),
-                frame.width, frame.height, o.mode.c_str(), o.shader.c_str(), o.interp.c_str(),
+                frame.width, frame.height, o.mode.c_str(),
+                std::string(toString(settings.shader)).c_str(), o.interp.c_str(),
                 std::string(toString(settings.lighting)).c_str(), context->description().c_str());
     printFrameTimes(ms);
     if (o.stats) {

@@ -10,6 +10,7 @@
 #include "facet/evaluation/frame_times.hpp"
 #include "facet/limits.hpp"
 #include "facet/render.hpp"
+#include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 
 namespace facet::app {
@@ -53,21 +54,26 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
     cmd.add_option("--mode", o.mode, "Draw mode")
         ->check(CLI::IsMember(choices(drawModeNames())))
         ->capture_default_str();
-    cmd.add_option("--shader", o.shader, "Shader")
-        ->check(CLI::IsMember(choices(shaderNames())))
-        ->capture_default_str();
+    cmd.add_option("--shader", o.shader,
+                   "Shader (default: what the scene opens with: texture for a mesh with uvs and "
+                   "a texture, painter otherwise)")
+        ->check(CLI::IsMember(choices(shaderNames())));
     cmd.add_option("--interp", o.interp, interpHelp)->capture_default_str();
     cmd.add_option("--lighting", o.lighting,
-                   "Lighting: off, gouraud (per vertex) or phong (per pixel); default off for a "
-                   ".scene, gouraud for a bare mesh")
+                   "Lighting: off, gouraud (per vertex) or phong (per pixel) (default: what the "
+                   "scene opens with: off for a mesh whose vertex colours vary, as the course's "
+                   "scenes, gouraud otherwise)")
         ->check(CLI::IsMember(choices(lightingNames())));
     cmd.add_option("--texture", o.texture,
                    "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's");
     cmd.add_option("--filter", o.filter, "Texture filter")
         ->check(CLI::IsMember(choices(filterNames())))
         ->capture_default_str();
-    cmd.add_flag("--combine", o.combine,
-                 "Texture shader: multiply the texel by the (lit) vertex colour");
+    CLI::Option* combine =
+        cmd.add_flag("--combine", o.combine,
+                     "Texture shader: multiply the texel by the (lit) vertex colour (default: on "
+                     "for a textured mesh without vertex colours, off otherwise)");
+    cmd.add_flag("--no-combine", o.noCombine, "Texture shader: the texel alone")->excludes(combine);
     cmd.add_flag("--normals", o.normals, "Draw vertex normals as red segments");
     cmd.add_flag("--legend", o.legend,
                  "Depth shader: draw a legend bar with the near and far depth it maps");
@@ -129,9 +135,9 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         std::fprintf(stderr, "%s: %s\n", command, message.c_str());
         return kBadInput;
     };
-    // CLI11 has already checked the names against the engine's lists (choices above).
+    // CLI11 has already checked the names against the engine's lists (choices above). Shader,
+    // lighting and combine start from what the scene opens with, once it is loaded.
     settings.mode = *parseDrawMode(o.mode);
-    settings.shader = *parseShader(o.shader);
     const std::optional<InterpSpec> interp = parseInterpSpec(o.interp);
     if (!interp)
         return bad("--interp wants affine, perspective, subdivided or subdivided:N (N in 2.." +
@@ -139,7 +145,6 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     settings.interp = interp->interp;
     settings.subdivision = interp->subdivision;
     settings.filter = *parseFilter(o.filter);
-    settings.combine = o.combine;
     settings.showNormals = o.normals || o.normalLength > 0.0;
     settings.normalLength = o.normalLength;
     settings.depthLegend = o.legend;
@@ -163,13 +168,16 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         openSceneFile(o.scene, w > 0 ? w : kBareMeshWidth, w > 0 ? h : kBareMeshHeight);
     if (!loaded) return bad(loaded.error().what());
     scene = std::move(loaded).value();
-    // A bare mesh is lit by default: its scene was made for it (conventions §3b). A .scene keeps
-    // the course's default, unlit.
-    settings.lighting = o.lighting.empty() ? (bareMesh ? Lighting::Gouraud : Lighting::Off)
-                                           : *parseLighting(o.lighting);
     if (!o.texture.empty()) {
         if (Status st = loadSceneTexture(scene, o.texture); !st) return bad(st.error().what());
     }
+    // One rule for what a scene opens with, whichever route opened it (conventions §9): the
+    // viewer's, so a bare mesh and the scene written from it render alike; options override it.
+    applyOpeningSettings(scene, settings);
+    if (!o.shader.empty()) settings.shader = *parseShader(o.shader);
+    if (!o.lighting.empty()) settings.lighting = *parseLighting(o.lighting);
+    if (o.combine) settings.combine = true;
+    if (o.noCombine) settings.combine = false;
     if (settings.shader == ShaderKind::Texture && !scene.texture)
         return bad(o.scene +
                    ": the texture shader needs a texture: the scene names none (line 10 "

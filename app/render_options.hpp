@@ -18,16 +18,17 @@ struct RenderOptions {
     std::string scene;
     std::string output;
     std::string mode = "solid";
-    std::string shader = "painter";
+    std::string shader;  ///< empty: what the scene opens with (applyOpeningSettings)
     std::string interp = "perspective";
-    std::string lighting;  ///< empty: off for a .scene, gouraud for a bare mesh
+    std::string lighting;  ///< empty: what the scene opens with (applyOpeningSettings)
     std::string filter = "bilinear";
     std::string texture;
     std::string size;
     std::string writeScene;  ///< --write-scene: save the scene (after --size, --texture) here
     std::string background = "5C5C5C";
     bool cull = false;
-    bool combine = false;
+    bool combine = false;    ///< --combine: on whatever the scene opens with
+    bool noCombine = false;  ///< --no-combine: off whatever the scene opens with
     bool normals = false;
     double normalLength = 0.0;
     bool legend = false;

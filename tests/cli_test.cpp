@@ -188,10 +188,11 @@ TEST_F(Cli, StatsReportVaryingsAndBytesPerVertex) {
     // A depth image needs no normals even with lighting on.
     EXPECT_NE(stats("--shader depth --lighting phong").find("per vertex: 28 bytes; varyings: 1 "),
               std::string::npos);
-    // A mesh without colours interpolates depth only.
+    // A mesh without colours, unlit, interpolates depth only (it opens lit: conventions §9).
     std::ofstream(out("plain.scene")) << FACET_TEST_DATA << "/off_no_colors.off\n0 0 -4\n0 0 0\n"
                                       << "0 -1 0\n200\n64 48\n1\n0 0 -8 1\n0.5 0.5 0.5 1\n";
-    const Outcome r = run("render " + out("plain.scene") + " -o " + out("p.png") + " --stats");
+    const Outcome r =
+        run("render " + out("plain.scene") + " -o " + out("p.png") + " --stats --lighting off");
     EXPECT_NE(r.out.find("per vertex: 28 bytes; varyings: 1 floats (1/w)"), std::string::npos)
         << r.out;
 }
@@ -560,13 +561,48 @@ TEST_F(Cli, ABareMeshRendersLitAndItsSavedSceneRendersTheSameBytes) {
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_NE(r.out.find("lighting gouraud"), std::string::npos) << r.out;  // lit by default
     EXPECT_EQ(pngSize(out("a.png")), std::make_pair(640, 400));
-    // The saved scene holds the scene, not the settings: the same options give the same bytes.
-    r = run("render " + out("teapot.scene") + " -o " + out("b.png") + " --lighting gouraud");
+    // The saved scene opens by the same rule as the mesh (conventions §9): with no options it
+    // renders the same bytes.
+    r = run("render " + out("teapot.scene") + " -o " + out("b.png"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_EQ(fileBytes(out("a.png")), fileBytes(out("b.png")));
     const std::string text = fileBytes(out("teapot.scene"));
     EXPECT_EQ(text.find(kModelsDir), std::string::npos) << "relative path expected:\n" << text;
     EXPECT_NE(text.find("\n640 400\n"), std::string::npos) << text;
+}
+
+// One set of defaults (conventions §9, applyOpeningSettings): Spot's scene names a texture and
+// its mesh has no colours, so it opens textured, combined and lit, as the viewer opens it; a
+// course scene (coloured mesh) stays unlit painter. Options override each part.
+TEST_F(Cli, ScenesOpenWithTheDefaultsOfTheirContents) {
+    const std::string spot = facet::test::sharedData("scenes/spot_1280x720.scene");
+    REQUIRE_SHARED_DATA(spot);
+    Outcome r = run("render " + spot + " -o " + out("default.png") + " --size 320x180");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("texture"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("combined"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("lighting gouraud"), std::string::npos) << r.out;
+    r = run("render " + spot + " -o " + out("explicit.png") +
+            " --size 320x180 --shader texture --combine --lighting gouraud");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(fileBytes(out("default.png")), fileBytes(out("explicit.png")));
+    r = run("render " + spot + " -o " + out("flat.png") +
+            " --size 320x180 --shader painter --lighting off");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(fileBytes(out("default.png")), fileBytes(out("flat.png")));
+    // --no-combine turns the default off; with --combine it is refused.
+    r = run("render " + spot + " -o " + out("texel.png") + " --size 320x180 --no-combine");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(r.out.find("combined"), std::string::npos) << r.out;
+    EXPECT_EQ(run("render " + spot + " -o " + out("x.png") + " --combine --no-combine").exitCode,
+              2);
+
+    const std::string course = facet::test::sharedData("course/example0.scene");
+    REQUIRE_SHARED_DATA(course);
+    r = run("render " + course + " -o " + out("course.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("painter"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("lighting off"), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, AResizedScenesSavedCopyRendersTheSameBytes) {
