@@ -1,6 +1,7 @@
 // The facet command line as a user meets it: real processes, real files, exit codes and the
 // one-line error messages promised for bad input.
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -631,6 +632,41 @@ TEST_F(Cli, AFileThatIsNoSceneOrMeshSaysWhatWasExpected) {
     r = run("render " + out("tri.obj") + " -o " + out("x.png"));
     EXPECT_EQ(r.exitCode, 0) << r.out;
     EXPECT_EQ(r.out.find("must end in"), std::string::npos) << r.out;
+}
+
+// Typos get a suggestion by edit distance: a misspelt command and a misspelt option, each on one
+// line with exit code 2; a word near nothing lists the commands.
+TEST_F(Cli, MisspeltCommandsAndOptionsGetASuggestion) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    Outcome r = run("rendr " + scene + " -o " + out("x.png"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("unknown command 'rendr': did you mean 'render'?"), std::string::npos)
+        << r.out;
+    r = run("render " + scene + " -o " + out("x.png") + " --lightng phong");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("unknown option '--lightng' for 'render': did you mean '--lighting'?"),
+              std::string::npos)
+        << r.out;
+    r = run("frobnicate");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("unknown command 'frobnicate' (the commands: render,"), std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(out("x.png")));
+}
+
+// A pipe or a device is refused before anything reads it: a FIFO nobody writes to would block
+// a read forever, /dev/zero would never end.
+TEST_F(Cli, PipesAndDevicesAreRefusedBeforeReading) {
+    const std::string fifo = out("pipe.scene");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const std::string& path : {fifo, std::string("/dev/zero")}) {
+        // timeout: a regression fails in seconds instead of hanging the suite.
+        const Outcome r = facet_test::runCommand("timeout 20 " + std::string(FACET_CLI) +
+                                                 " render " + path + " -o " + out("x.png"));
+        EXPECT_EQ(r.exitCode, 2) << path;
+        EXPECT_NE(r.out.find(path + ": is not a regular file"), std::string::npos) << r.out;
+        EXPECT_EQ(countLines(r.out), 1) << r.out;
+    }
 }
 
 }  // namespace
