@@ -50,21 +50,22 @@ int runGlRender(const RenderOptions& o) {
         last = stats.value();
         ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     }
-    if (Status st = writePng(frame, o.output); !st) return failed(st.error().what());
-    std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s) with %s\n", o.output.c_str(),
-                frame.width, frame.height, o.mode.c_str(),
-                std::string(toString(settings.shader)).c_str(), o.interp.c_str(),
-                std::string(toString(settings.lighting)).c_str(), context->description().c_str());
-    printFrameTimes(ms);
+    std::FILE* info = reportStream(o.output);  // stderr when the PNG goes to stdout
+    if (Status st = writeOutput(frame, o.output); !st) return failed(st.error().what());
+    std::fprintf(info, "wrote %s (%dx%d, %s, %s, %s, lighting %s) with %s\n", o.output.c_str(),
+                 frame.width, frame.height, o.mode.c_str(),
+                 std::string(toString(settings.shader)).c_str(), o.interp.c_str(),
+                 std::string(toString(settings.lighting)).c_str(), context->description().c_str());
+    printFrameTimes(ms, info);
     if (o.stats) {
-        std::printf(
-            "submitted: %zu triangles, %zu lines, %zu points, %zu normals; %zu bytes sent\n",
+        std::fprintf(
+            info, "submitted: %zu triangles, %zu lines, %zu points, %zu normals; %zu bytes sent\n",
             last.trianglesIn, last.linesDrawn, last.pointsDrawn, last.normalsDrawn,
             last.uploadBytes);
-        std::printf("last frame: upload %.3f ms, draw %.3f ms, readback %.3f ms\n", last.uploadMs,
-                    last.drawMs, last.readbackMs);
+        std::fprintf(info, "last frame: upload %.3f ms, draw %.3f ms, readback %.3f ms\n",
+                     last.uploadMs, last.drawMs, last.readbackMs);
         if (settings.shader == ShaderKind::Depth)
-            std::printf("depth range: %.6g .. %.6g\n", last.depthNear, last.depthFar);
+            std::fprintf(info, "depth range: %.6g .. %.6g\n", last.depthNear, last.depthFar);
     }
     return kOk;
 }

@@ -1,13 +1,16 @@
 #include "render_options.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <utility>
 
 #include "commands.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/frame_times.hpp"
+#include "facet/image_io.hpp"
 #include "facet/limits.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_defaults.hpp"
@@ -50,7 +53,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "The .scene file, or a bare .off/.obj mesh (framed from a three-quarter view, "
                    "lit by a light near the camera)")
         ->required();
-    if (withOutput) cmd.add_option("-o,--output", o.output, "Output PNG path")->required();
+    if (withOutput)
+        cmd.add_option("-o,--output", o.output,
+                       "Output image: a .png file, or - for the PNG on standard output")
+            ->required();
     cmd.add_option("--mode", o.mode, "Draw mode")
         ->check(CLI::IsMember(choices(drawModeNames())))
         ->capture_default_str();
@@ -135,6 +141,14 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         std::fprintf(stderr, "%s: %s\n", command, message.c_str());
         return kBadInput;
     };
+    // Only PNG is written: another extension would get PNG bytes under a wrong name.
+    if (!o.output.empty() && o.output != "-") {
+        std::string ext = std::filesystem::path(o.output).extension().string();
+        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (ext != ".png")
+            return bad("-o " + o.output +
+                       ": only PNG is written; name the file .png, or give - for standard output");
+    }
     // CLI11 has already checked the names against the engine's lists (choices above). Shader,
     // lighting and combine start from what the scene opens with, once it is loaded.
     settings.mode = *parseDrawMode(o.mode);
@@ -201,11 +215,26 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     return kOk;
 }
 
-void printFrameTimes(std::vector<double> ms) {
+Status writeOutput(const Framebuffer& frame, const std::string& output) {
+    if (output != "-") return writePng(frame, output);
+    Result<std::string> bytes = encodePng(frame);
+    if (!bytes) return bytes.error();
+    if (std::fwrite(bytes.value().data(), 1, bytes.value().size(), stdout) !=
+            bytes.value().size() ||
+        std::fflush(stdout) != 0)
+        return Error{{"standard output", 0}, "cannot write the PNG"};
+    return {};
+}
+
+std::FILE* reportStream(const std::string& output) {
+    return output == "-" ? stderr : stdout;
+}
+
+void printFrameTimes(std::vector<double> ms, std::FILE* out) {
     if (ms.size() < 2) return;
     const FrameTimes t = summarize(std::move(ms));
-    std::printf("median %.3f ms (min %.3f, max %.3f) over %d frames\n", t.median, t.min, t.max,
-                t.frames);
+    std::fprintf(out, "median %.3f ms (min %.3f, max %.3f) over %d frames\n", t.median, t.min,
+                 t.max, t.frames);
 }
 
 }  // namespace facet::app

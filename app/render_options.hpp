@@ -3,11 +3,14 @@
 // sub-commands, one function that turns them into a loaded scene and RenderSettings, and one
 // timing summary, so the two commands draw the same picture from the same command line.
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "facet/error.hpp"
+#include "facet/framebuffer.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
@@ -54,7 +57,13 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& 
 int prepareRender(const RenderOptions& options, const char* command, Scene& scene,
                   RenderSettings& settings);
 
-/// Prints `median X ms (min, max) over N frames` when more than one frame was timed.
-void printFrameTimes(std::vector<double> ms);
+/// Prints `median X ms (min, max) over N frames` to `out` when more than one frame was timed.
+void printFrameTimes(std::vector<double> ms, std::FILE* out = stdout);
+
+/// Writes the frame to -o: a PNG file, or the PNG's bytes on standard output for "-".
+Status writeOutput(const Framebuffer& frame, const std::string& output);
+
+/// Where a command's report goes: stderr when -o - puts the image on stdout.
+std::FILE* reportStream(const std::string& output);
 
 }  // namespace facet::app

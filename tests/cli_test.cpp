@@ -669,4 +669,22 @@ TEST_F(Cli, PipesAndDevicesAreRefusedBeforeReading) {
     }
 }
 
+// -o by extension: PNG only, anything else refused before rendering with a clear line (no
+// PNG bytes under a .jpg name); -o - puts the PNG on standard output and the report on stderr.
+TEST_F(Cli, OutputIsAPngFileOrStandardOutput) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    Outcome r = run("render " + scene + " -o " + out("x.jpg"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("only PNG is written"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(out("x.jpg")));
+    ASSERT_EQ(run("render " + scene + " -o " + out("file.PNG") + " --size 64x36").exitCode, 0);
+    // The braces keep runCommand's 2>&1 off the redirected stdout.
+    r = facet_test::runCommand("{ " + std::string(FACET_CLI) + " render " + scene +
+                               " --size 64x36 -o - > " + out("piped.png") + "; }");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("wrote - (64x36"), std::string::npos) << r.out;  // the report, stderr
+    EXPECT_EQ(fileBytes(out("piped.png")), fileBytes(out("file.PNG")));
+    EXPECT_FALSE(fs::exists("-"));
+}
+
 }  // namespace
