@@ -43,14 +43,16 @@ int runRender(const RenderOptions& o) {
         std::fprintf(stderr, "facet render: %s\n", st.error().what().c_str());
         return kFailed;
     }
-    std::fprintf(
-        info, "wrote %s (%dx%d, %s, %s, %s, lighting %s%s%s)\n", o.output.c_str(), frame.width,
-        frame.height, o.mode.c_str(), std::string(toString(settings.shader)).c_str(),
-        o.interp.c_str(), std::string(toString(settings.lighting)).c_str(),
-        settings.shader == ShaderKind::Texture
-            ? (std::string(", ") + o.filter + (settings.combine ? ", combined" : "")).c_str()
-            : "",
-        o.cull ? ", culled" : "");
+    std::fprintf(info, "wrote %s (%dx%d, %s, %s, %s, lighting %s%s%s)\n", o.output.c_str(),
+                 frame.width, frame.height, o.mode.c_str(),
+                 std::string(toString(settings.shader)).c_str(), o.interp.c_str(),
+                 std::string(toString(settings.lighting)).c_str(),
+                 settings.shader == ShaderKind::Texture
+                     ? (std::string(", ") + std::string(toString(settings.filter)) +
+                        (settings.combine ? ", combined" : ""))
+                           .c_str()
+                     : "",
+                 o.cull ? ", culled" : "");
     printFrameTimes(ms, info);
     if (o.stats) {
         std::fprintf(info, "mesh: %zu vertices, %zu triangles%s%s\n", scene.mesh->vertexCount(),

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -40,6 +41,22 @@ bool parseHexColor(std::string text, std::uint32_t& rgb) {
     return r.ec == std::errc{} && r.ptr == text.data() + 6;
 }
 
+/// Parses "X,Y,Z" (three finite numbers).
+bool parseVec3(const std::string& text, glm::dvec3& v) {
+    const char* p = text.data();
+    const char* end = p + text.size();
+    for (int i = 0; i < 3; ++i) {
+        auto r = std::from_chars(p, end, v[i]);
+        if (r.ec != std::errc{} || !std::isfinite(v[i])) return false;
+        p = r.ptr;
+        if (i < 2) {
+            if (p == end || *p != ',') return false;
+            ++p;
+        }
+    }
+    return p == end;
+}
+
 /// The engine's names for a setting, as CLI11 wants them; one list serves parsing and --help.
 std::vector<std::string> choices(const std::vector<std::string_view>& names) {
     return {names.begin(), names.end()};
@@ -72,9 +89,8 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
         ->check(CLI::IsMember(choices(lightingNames())));
     cmd.add_option("--texture", o.texture,
                    "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's");
-    cmd.add_option("--filter", o.filter, "Texture filter")
-        ->check(CLI::IsMember(choices(filterNames())))
-        ->capture_default_str();
+    cmd.add_option("--filter", o.filter, "Texture filter (default: bilinear)")
+        ->check(CLI::IsMember(choices(filterNames())));
     CLI::Option* combine =
         cmd.add_flag("--combine", o.combine,
                      "Texture shader: multiply the texel by the (lit) vertex colour (default: on "
@@ -91,6 +107,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
     cmd.add_option("--size", o.size,
                    "Image size WxH (a .scene: the focal length scales with the width; a bare "
                    "mesh: framed for this size, 1280x720 by default)");
+    cmd.add_option("--up", o.up,
+                   "A bare mesh: the world axis it stands on, shown up (y by default; z for "
+                   "scans and CAD models made Z-up)")
+        ->check(CLI::IsMember({"x", "y", "z", "X", "Y", "Z"}));
+    cmd.add_option("--eye", o.eye, "Camera position X,Y,Z, replacing the scene's");
+    cmd.add_option("--look", o.look, "Look-at point X,Y,Z, replacing the scene's");
     cmd.add_option("--write-scene", o.writeScene,
                    "Also save the scene (mesh, camera, size, light, material, texture) as a "
                    ".scene file that renders the same image with the same options");
@@ -158,7 +180,7 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
                    std::to_string(kMaxSubdivision) + "), got '" + o.interp + "'");
     settings.interp = interp->interp;
     settings.subdivision = interp->subdivision;
-    settings.filter = *parseFilter(o.filter);
+    if (!o.filter.empty()) settings.filter = *parseFilter(o.filter);
     settings.showNormals = o.normals || o.normalLength > 0.0;
     settings.normalLength = o.normalLength;
     settings.depthLegend = o.legend;
@@ -178,8 +200,19 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         return bad("--size wants WxH with 1.." + std::to_string(kMaxImageSide) + " each, got '" +
                    o.size + "'");
     const bool bareMesh = fileKind(o.scene) == FileKind::mesh;
-    Result<Scene> loaded =
-        openSceneFile(o.scene, w > 0 ? w : kBareMeshWidth, w > 0 ? h : kBareMeshHeight);
+    if (!o.up.empty() && !bareMesh)
+        return bad("--up frames a bare .off/.obj mesh; " + o.scene +
+                   " is not one (a .scene has its own camera: use --eye and --look)");
+    glm::dvec3 eye{0.0}, look{0.0};
+    if (!o.eye.empty() && !parseVec3(o.eye, eye))
+        return bad("--eye wants X,Y,Z (three numbers), got '" + o.eye + "'");
+    if (!o.look.empty() && !parseVec3(o.look, look))
+        return bad("--look wants X,Y,Z (three numbers), got '" + o.look + "'");
+    OpenOptions open;
+    open.width = w > 0 ? w : kBareMeshWidth;
+    open.height = w > 0 ? h : kBareMeshHeight;
+    if (!o.up.empty()) open.up = *parseUpAxis(o.up);
+    Result<Scene> loaded = openSceneFile(o.scene, open);
     if (!loaded) return bad(loaded.error().what());
     scene = std::move(loaded).value();
     if (!o.texture.empty()) {
@@ -201,8 +234,23 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
                      "%s: warning: %s has no texture coordinates; every pixel samples "
                      "uv = (0, 0)\n",
                      command, scene.meshPath.c_str());
+    // Options the others leave without effect: one line each, naming what they need.
+    auto warn = [command](const char* message) {
+        std::fprintf(stderr, "%s: warning: %s\n", command, message);
+    };
+    if (settings.shader != ShaderKind::Texture) {
+        if (o.combine || o.noCombine)
+            warn("--combine and --no-combine apply to the texture shader (--shader texture)");
+        if (!o.filter.empty()) warn("--filter applies to the texture shader (--shader texture)");
+    }
+    if (o.legend && settings.shader != ShaderKind::Depth)
+        warn("--legend is the depth shader's legend (--shader depth)");
+    if (settings.mode != DrawMode::Solid && (o.supersample > 1 || o.msaa > 1))
+        warn("--supersample and --msaa apply to triangles (--mode solid)");
     if (!bareMesh && w > 0)
         scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
+    if (!o.eye.empty()) scene.camera.eye = eye;
+    if (!o.look.empty()) scene.camera.look = look;
     // Refused before --write-scene and before the renderer allocates anything: the engine's
     // own check (Renderer::render makes the same), so the messages are the library's.
     if (Status st = checkFrame(scene.camera, settings); !st) return bad(st.error().what());

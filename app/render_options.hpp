@@ -24,9 +24,12 @@ struct RenderOptions {
     std::string shader;  ///< empty: what the scene opens with (applyOpeningSettings)
     std::string interp = "perspective";
     std::string lighting;  ///< empty: what the scene opens with (applyOpeningSettings)
-    std::string filter = "bilinear";
+    std::string filter;    ///< empty: bilinear
     std::string texture;
     std::string size;
+    std::string up;          ///< --up x|y|z: the axis a bare mesh stands on (conventions §3b)
+    std::string eye;         ///< --eye X,Y,Z: the camera position, replacing the scene's
+    std::string look;        ///< --look X,Y,Z: the look-at point, replacing the scene's
     std::string writeScene;  ///< --write-scene: save the scene (after --size, --texture) here
     std::string background = "5C5C5C";
     bool cull = false;

@@ -687,4 +687,64 @@ TEST_F(Cli, OutputIsAPngFileOrStandardOutput) {
     EXPECT_FALSE(fs::exists("-"));
 }
 
+// A Z-up model (Nefertiti, a scan) is framed standing with --up z (conventions §3b): the written
+// scene's y hint is -Z, and the image differs from the default +Y framing; --up on a .scene has
+// no effect and is refused naming what it needs; --eye and --look replace the camera's pose.
+TEST_F(Cli, UpEyeAndLookFrameABareMesh) {
+    const std::string nefertiti = kModelsDir + "/nefertiti.obj";
+    REQUIRE_SHARED_DATA(nefertiti);
+    Outcome r = run("render " + nefertiti + " -o " + out("z.png") + " --size 160x120 --up z" +
+                    " --write-scene " + out("z.scene"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const facet::Result<facet::Scene> zUp =
+        facet::parseScene(fileBytes(out("z.scene")), out("z.scene"));
+    ASSERT_TRUE(zUp) << zUp.error().what();
+    EXPECT_EQ(zUp.value().camera.up, glm::dvec3(0, 0, -1));
+    ASSERT_EQ(run("render " + nefertiti + " -o " + out("y.png") + " --size 160x120").exitCode, 0);
+    EXPECT_NE(fileBytes(out("z.png")), fileBytes(out("y.png")));
+
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    r = run("render " + scene + " -o " + out("x.png") + " --up z");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("--up frames a bare .off/.obj mesh"), std::string::npos) << r.out;
+
+    r = run("render " + scene + " -o " + out("moved.png") + " --size 64x36 --eye 0,0,4 " +
+            "--look 0,0,0 --write-scene " + out("moved.scene"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const facet::Result<facet::Scene> moved =
+        facet::parseScene(fileBytes(out("moved.scene")), out("moved.scene"));
+    ASSERT_TRUE(moved) << moved.error().what();
+    EXPECT_EQ(moved.value().camera.eye, glm::dvec3(0, 0, 4));
+    EXPECT_EQ(moved.value().camera.look, glm::dvec3(0, 0, 0));
+    r = run("render " + scene + " -o " + out("x.png") + " --eye 1,2");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("--eye wants X,Y,Z"), std::string::npos) << r.out;
+    r = run("render " + scene + " -o " + out("x.png") + " --eye 0,0,0 --look 0,0,0");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("look-at point equals the camera position"), std::string::npos) << r.out;
+}
+
+// An option the others leave without effect is a one-line warning naming what it needs; the image
+// is still written.
+TEST_F(Cli, OptionsWithoutEffectWarnNamingWhatTheyNeed) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    const auto warnings = [&](const std::string& opts) {
+        const Outcome r = run("render " + scene + " -o " + out("w.png") + " --size 64x36 " + opts);
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        return r.out;
+    };
+    EXPECT_NE(warnings("--combine")
+                  .find("warning: --combine and --no-combine apply to the "
+                        "texture shader (--shader texture)"),
+              std::string::npos);
+    EXPECT_NE(warnings("--filter nearest").find("warning: --filter applies to the texture shader"),
+              std::string::npos);
+    EXPECT_NE(warnings("--legend").find("warning: --legend is the depth shader's legend"),
+              std::string::npos);
+    EXPECT_NE(warnings("--mode wireframe --msaa 4").find("warning: --supersample and --msaa apply"),
+              std::string::npos);
+    EXPECT_EQ(warnings("--shader depth --legend").find("warning"), std::string::npos);
+    EXPECT_EQ(warnings("").find("warning"), std::string::npos);
+}
+
 }  // namespace
