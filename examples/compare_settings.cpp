@@ -41,7 +41,9 @@ int main(int argc, char** argv) {
     facet::Framebuffer frame;
     const std::array<std::pair<const char*, facet::RenderSettings>, 3> methods{
         {{"affine", affine}, {"perspective", base}, {"supersample 2x2", supersampled}}};
-    for (const auto& [name, settings] : methods) {
+    for (const auto& method : methods) {
+        const char* name = method.first;
+        const facet::RenderSettings& settings = method.second;
         bool ok = true;
         const facet::FrameTimes times = facet::timeRepeated(
             5, [&] { ok = ok && renderer.render(scene, settings, frame).ok(); });
