@@ -52,8 +52,8 @@ int runAccuracy(const AccuracyOptions& o) {
             return kBadInput;
         }
         if (!o.texture.empty() && !scene.value().texture && !scene.value().mesh->uvs.empty()) {
-            if (Status st = loadSceneTexture(scene.value(), o.texture)) {
-                std::fprintf(stderr, "%s\n", st->what().c_str());
+            if (Status st = loadSceneTexture(scene.value(), o.texture); !st) {
+                std::fprintf(stderr, "%s\n", st.error().what().c_str());
                 return kBadInput;
             }
         }
@@ -71,8 +71,8 @@ int runAccuracy(const AccuracyOptions& o) {
         scenes.push_back(std::move(scene.value()));
     }
     if (!o.chart.empty()) {
-        if (Status st = checkGnuplot(o.gnuplot)) {
-            std::fprintf(stderr, "%s\n", st->what().c_str());
+        if (Status st = checkGnuplot(o.gnuplot); !st) {
+            std::fprintf(stderr, "%s\n", st.error().what().c_str());
             return kBadInput;
         }
     }
@@ -116,8 +116,8 @@ int runAccuracy(const AccuracyOptions& o) {
 
     int code = kOk;
     if (!o.csv.empty()) {
-        if (Status st = writeAccuracyCsv(o.csv, machine, o.samples, results)) {
-            std::fprintf(stderr, "%s\n", st->what().c_str());
+        if (Status st = writeAccuracyCsv(o.csv, machine, o.samples, results); !st) {
+            std::fprintf(stderr, "%s\n", st.error().what().c_str());
             code = kFailed;
         }
     }
@@ -126,8 +126,8 @@ int runAccuracy(const AccuracyOptions& o) {
                                   std::to_string(machine.cores) + " cores; ground truth " +
                                   std::to_string(o.samples) + "x" + std::to_string(o.samples) +
                                   " samples; " + machine.date;
-        if (Status st = writeAccuracyChart(o.chart, o.gnuplot, title, results)) {
-            std::fprintf(stderr, "%s\n", st->what().c_str());
+        if (Status st = writeAccuracyChart(o.chart, o.gnuplot, title, results); !st) {
+            std::fprintf(stderr, "%s\n", st.error().what().c_str());
             code = kFailed;
         }
     }

@@ -64,8 +64,8 @@ void measureEngine(const BenchOptions& o, Renderer& renderer, Framebuffer& frame
     if (!o.images.empty()) {
         const std::string name =
             c.name + "_" + config.name + "_engine_t" + std::to_string(threads) + ".png";
-        if (Status st = writePng(frame, (std::filesystem::path(o.images) / name).string()))
-            std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
+        if (Status st = writePng(frame, (std::filesystem::path(o.images) / name).string()); !st)
+            std::fprintf(stderr, "facet bench: %s\n", st.error().what().c_str());
     }
 }
 
@@ -119,10 +119,10 @@ int runBench(const BenchOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const MachineInfo machine = collectMachineInfo();
     // Say at once that the chart will fail, rather than after minutes of measuring.
-    Status gnuplot = o.chart.empty() ? std::nullopt : checkGnuplot(o.gnuplot);
-    if (gnuplot)
+    Status gnuplot = o.chart.empty() ? Status{} : checkGnuplot(o.gnuplot);
+    if (!gnuplot)
         std::fprintf(stderr, "facet bench: warning: %s; the table and CSV will still be written\n",
-                     gnuplot->what().c_str());
+                     gnuplot.error().what().c_str());
     Result<BenchSuite> built = buildSuite(o);
     if (!built) {
         std::fprintf(stderr, "facet bench: %s\n", built.error().what().c_str());
@@ -158,7 +158,7 @@ int runBench(const BenchOptions& o) {
             measureOpenGl(c, config, threads, peers, progress, results);
         }
     for (std::size_t i = 0; i < peers.running.size(); ++i)
-        if (Status st = peers.running[i].finish()) peers.fail(results, threads[i], st->what());
+        if (Status st = peers.running[i].finish(); !st) peers.fail(results, threads[i], st.error().what());
     const bool glFailed = peers.failed;
 
     printBenchTable(stdout, suite, results, threads);
@@ -176,8 +176,8 @@ int runBench(const BenchOptions& o) {
         const RunDescription run{
             std::string(o.scaling ? "scaling" : "suite") + (o.quick ? ", quick" : ""), threads,
             framePlan(o)};
-        if (Status st = writeBenchCsv(o.csv, machine, run, suite, results)) {
-            std::fprintf(stderr, "facet bench: %s\n", st->what().c_str());
+        if (Status st = writeBenchCsv(o.csv, machine, run, suite, results); !st) {
+            std::fprintf(stderr, "facet bench: %s\n", st.error().what().c_str());
             code = kFailed;
         }
     }
@@ -187,11 +187,11 @@ int runBench(const BenchOptions& o) {
                                    machine.cpu + ", " + std::to_string(machine.cores) +
                                    " cores; OpenGL " + results.glRenderer + "; " + machine.date,
                                threads};
-        Status st = gnuplot     ? gnuplot
+        Status st = !gnuplot    ? gnuplot
                     : o.scaling ? writeScalingChart(req, suite, results)
                                 : writeSuiteChart(req, suite, results);
-        if (st) {
-            std::fprintf(stderr, "facet bench: --chart: %s\n", st->what().c_str());
+        if (!st) {
+            std::fprintf(stderr, "facet bench: --chart: %s\n", st.error().what().c_str());
             code = kFailed;
         }
     }

@@ -30,8 +30,8 @@ int runGenerate(const GenerateOptions& o) {
         const int n = o.detail > 0 ? o.detail : 16;
         mesh = makeJitteredGrid(n, n, 0.3f, 1234u);
     }
-    if (Status st = writeOff(mesh, o.output)) {
-        std::fprintf(stderr, "facet generate: %s\n", st->what().c_str());
+    if (Status st = writeOff(mesh, o.output); !st) {
+        std::fprintf(stderr, "facet generate: %s\n", st.error().what().c_str());
         return kFailed;
     }
     std::printf("wrote %s (%zu vertices, %zu triangles)\n", o.output.c_str(), mesh.vertexCount(),

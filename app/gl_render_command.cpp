@@ -43,31 +43,37 @@ int runGlRender(const RenderOptions& o) {
     // glFinish), which is what the frame times measure, and one readback for the picture.
     Framebuffer frame;
     GlStats stats;
-    if (Status st = renderer->upload(scene, settings, stats)) return failed(st->what());
+    if (Status st = renderer->upload(scene, settings, stats); !st) return failed(st.error().what());
     std::vector<double> ms;
     for (int i = 0; i < std::max(1, o.frames); ++i) {
         const double before = stats.drawMs;
-        if (Status st = renderer->draw(scene, settings, stats)) return failed(st->what());
+        if (Status st = renderer->draw(scene, settings, stats); !st) return failed(st.error().what());
         ms.push_back(stats.drawMs - before);
     }
-    if (Status st = renderer->readBack(scene, settings, frame, stats)) return failed(st->what());
-    if (Status st = writePng(frame, o.output)) return failed(st->what());
-    std::printf("wrote %s (%dx%d, %s, %s, %s, lighting %s) with %s\n", o.output.c_str(),
-                frame.width, frame.height, o.mode.c_str(), o.shader.c_str(), o.interp.c_str(),
-                std::string(toString(settings.lighting)).c_str(), context->description().c_str());
-    if (ms.size() > 1) std::printf("frame times: the draw up to glFinish, the mesh resident\n");
-    printFrameTimes(ms);
+    if (Status st = renderer->readBack(scene, settings, frame, stats); !st)
+        return failed(st.error().what());
+    std::FILE* info = reportStream(o.output);  // stderr when the PNG goes to stdout
+    if (Status st = writeOutput(frame, o.output); !st) return failed(st.error().what());
+    std::fprintf(info, "wrote %s (%dx%d, %s, %s, %s, lighting %s) with %s\n", o.output.c_str(),
+                 frame.width, frame.height, o.mode.c_str(),
+                 std::string(toString(settings.shader)).c_str(), o.interp.c_str(),
+                 std::string(toString(settings.lighting)).c_str(), context->description().c_str());
+    if (ms.size() > 1)
+        std::fprintf(info, "frame times: the draw up to glFinish, the mesh resident\n");
+    printFrameTimes(ms, info);
     if (o.stats) {
-        std::printf(
+        std::fprintf(
+            info,
             "submitted: %zu triangles, %zu lines, %zu points, %zu normals; %zu bytes sent once\n",
             stats.trianglesIn, stats.linesDrawn, stats.pointsDrawn, stats.normalsDrawn,
             stats.uploadBytes);
-        std::printf(
+        std::fprintf(
+            info,
             "upload once %.3f ms (normals, buffers, texture), draw %.3f ms (last of %zu, up to "
             "glFinish), readback once %.3f ms (colour and depth)\n",
             stats.uploadMs, ms.back(), ms.size(), stats.readbackMs);
         if (settings.shader == ShaderKind::Depth)
-            std::printf("depth range: %.6g .. %.6g\n", stats.depthNear, stats.depthFar);
+            std::fprintf(info, "depth range: %.6g .. %.6g\n", stats.depthNear, stats.depthFar);
     }
     return kOk;
 }

@@ -103,8 +103,9 @@ int runInspect(const RenderOptions& o, int x, int y, int truthSamples) {
     }
     const PixelHistory h = inspectPixel(scene, settings, x, y);
     std::printf("pixel (%d, %d) of %s, %dx%d, %s %s %s, lighting %s\n", x, y, o.scene.c_str(),
-                scene.camera.width, scene.camera.height, o.mode.c_str(), o.shader.c_str(),
-                o.interp.c_str(), std::string(toString(settings.lighting)).c_str());
+                scene.camera.width, scene.camera.height, o.mode.c_str(),
+                std::string(toString(settings.shader)).c_str(), o.interp.c_str(),
+                std::string(toString(settings.lighting)).c_str());
     std::printf("final colour  %s  depth %s\n", hexFromRgba(h.finalColor).c_str(),
                 depthText(h.finalDepth).c_str());
     if (settings.shader == ShaderKind::Depth)

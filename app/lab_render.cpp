@@ -12,8 +12,8 @@ int renderLab(const Scene& scene, const RenderSettings& settings, const std::str
     lab::Renderer renderer;
     Framebuffer frame;
     const lab::Report report = renderer.render(scene, settings, frame);
-    if (Status st = writePng(frame, output)) {
-        std::fprintf(stderr, "facet render: %s\n", st->what().c_str());
+    if (Status st = writePng(frame, output); !st) {
+        std::fprintf(stderr, "facet render: %s\n", st.error().what().c_str());
         return kFailed;
     }
     std::printf("wrote %s (%dx%d, the lab's pipeline, %zu fragments)\n", output.c_str(),

@@ -1,14 +1,20 @@
 #include "render_options.hpp"
 
+#include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <utility>
 
 #include "commands.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/frame_times.hpp"
+#include "facet/image_io.hpp"
 #include "facet/limits.hpp"
+#include "facet/render.hpp"
+#include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
 
 namespace facet::app {
@@ -35,6 +41,22 @@ bool parseHexColor(std::string text, std::uint32_t& rgb) {
     return r.ec == std::errc{} && r.ptr == text.data() + 6;
 }
 
+/// Parses "X,Y,Z" (three finite numbers).
+bool parseVec3(const std::string& text, glm::dvec3& v) {
+    const char* p = text.data();
+    const char* end = p + text.size();
+    for (int i = 0; i < 3; ++i) {
+        auto r = std::from_chars(p, end, v[i]);
+        if (r.ec != std::errc{} || !std::isfinite(v[i])) return false;
+        p = r.ptr;
+        if (i < 2) {
+            if (p == end || *p != ',') return false;
+            ++p;
+        }
+    }
+    return p == end;
+}
+
 /// The engine's names for a setting, as CLI11 wants them; one list serves parsing and --help.
 std::vector<std::string> choices(const std::vector<std::string_view>& names) {
     return {names.begin(), names.end()};
@@ -48,25 +70,32 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                    "The .scene file, or a bare .off/.obj mesh (framed from a three-quarter view, "
                    "lit by a light near the camera)")
         ->required();
-    if (withOutput) cmd.add_option("-o,--output", o.output, "Output PNG path")->required();
+    if (withOutput)
+        cmd.add_option("-o,--output", o.output,
+                       "Output image: a .png file, or - for the PNG on standard output")
+            ->required();
     cmd.add_option("--mode", o.mode, "Draw mode")
         ->check(CLI::IsMember(choices(drawModeNames())))
         ->capture_default_str();
-    cmd.add_option("--shader", o.shader, "Shader")
-        ->check(CLI::IsMember(choices(shaderNames())))
-        ->capture_default_str();
+    cmd.add_option("--shader", o.shader,
+                   "Shader (default: what the scene opens with: texture for a mesh with uvs and "
+                   "a texture, painter otherwise)")
+        ->check(CLI::IsMember(choices(shaderNames())));
     cmd.add_option("--interp", o.interp, interpHelp)->capture_default_str();
     cmd.add_option("--lighting", o.lighting,
-                   "Lighting: off, gouraud (per vertex) or phong (per pixel); default off for a "
-                   ".scene, gouraud for a bare mesh")
+                   "Lighting: off, gouraud (per vertex) or phong (per pixel) (default: what the "
+                   "scene opens with: off for a mesh whose vertex colours vary, as the course's "
+                   "scenes, gouraud otherwise)")
         ->check(CLI::IsMember(choices(lightingNames())));
     cmd.add_option("--texture", o.texture,
                    "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's");
-    cmd.add_option("--filter", o.filter, "Texture filter")
-        ->check(CLI::IsMember(choices(filterNames())))
-        ->capture_default_str();
-    cmd.add_flag("--combine", o.combine,
-                 "Texture shader: multiply the texel by the (lit) vertex colour");
+    cmd.add_option("--filter", o.filter, "Texture filter (default: bilinear)")
+        ->check(CLI::IsMember(choices(filterNames())));
+    CLI::Option* combine =
+        cmd.add_flag("--combine", o.combine,
+                     "Texture shader: multiply the texel by the (lit) vertex colour (default: on "
+                     "for a textured mesh without vertex colours, off otherwise)");
+    cmd.add_flag("--no-combine", o.noCombine, "Texture shader: the texel alone")->excludes(combine);
     cmd.add_flag("--normals", o.normals, "Draw vertex normals as red segments");
     cmd.add_flag("--legend", o.legend,
                  "Depth shader: draw a legend bar with the near and far depth it maps");
@@ -78,6 +107,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
     cmd.add_option("--size", o.size,
                    "Image size WxH (a .scene: the focal length scales with the width; a bare "
                    "mesh: framed for this size, 1280x720 by default)");
+    cmd.add_option("--up", o.up,
+                   "A bare mesh: the world axis it stands on, shown up (y by default; z for "
+                   "scans and CAD models made Z-up)")
+        ->check(CLI::IsMember({"x", "y", "z", "X", "Y", "Z"}));
+    cmd.add_option("--eye", o.eye, "Camera position X,Y,Z, replacing the scene's");
+    cmd.add_option("--look", o.look, "Look-at point X,Y,Z, replacing the scene's");
     cmd.add_option("--write-scene", o.writeScene,
                    "Also save the scene (mesh, camera, size, light, material, texture) as a "
                    ".scene file that renders the same image with the same options");
@@ -128,17 +163,24 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         std::fprintf(stderr, "%s: %s\n", command, message.c_str());
         return kBadInput;
     };
-    // CLI11 has already checked the names against the engine's lists (choices above).
+    // Only PNG is written: another extension would get PNG bytes under a wrong name.
+    if (!o.output.empty() && o.output != "-") {
+        std::string ext = std::filesystem::path(o.output).extension().string();
+        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (ext != ".png")
+            return bad("-o " + o.output +
+                       ": only PNG is written; name the file .png, or give - for standard output");
+    }
+    // CLI11 has already checked the names against the engine's lists (choices above). Shader,
+    // lighting and combine start from what the scene opens with, once it is loaded.
     settings.mode = *parseDrawMode(o.mode);
-    settings.shader = *parseShader(o.shader);
     const std::optional<InterpSpec> interp = parseInterpSpec(o.interp);
     if (!interp)
         return bad("--interp wants affine, perspective, subdivided or subdivided:N (N in 2.." +
                    std::to_string(kMaxSubdivision) + "), got '" + o.interp + "'");
     settings.interp = interp->interp;
     settings.subdivision = interp->subdivision;
-    settings.filter = *parseFilter(o.filter);
-    settings.combine = o.combine;
+    if (!o.filter.empty()) settings.filter = *parseFilter(o.filter);
     settings.showNormals = o.normals || o.normalLength > 0.0;
     settings.normalLength = o.normalLength;
     settings.depthLegend = o.legend;
@@ -158,17 +200,31 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
         return bad("--size wants WxH with 1.." + std::to_string(kMaxImageSide) + " each, got '" +
                    o.size + "'");
     const bool bareMesh = fileKind(o.scene) == FileKind::mesh;
-    Result<Scene> loaded =
-        openSceneFile(o.scene, w > 0 ? w : kBareMeshWidth, w > 0 ? h : kBareMeshHeight);
+    if (!o.up.empty() && !bareMesh)
+        return bad("--up frames a bare .off/.obj mesh; " + o.scene +
+                   " is not one (a .scene has its own camera: use --eye and --look)");
+    glm::dvec3 eye{0.0}, look{0.0};
+    if (!o.eye.empty() && !parseVec3(o.eye, eye))
+        return bad("--eye wants X,Y,Z (three numbers), got '" + o.eye + "'");
+    if (!o.look.empty() && !parseVec3(o.look, look))
+        return bad("--look wants X,Y,Z (three numbers), got '" + o.look + "'");
+    OpenOptions open;
+    open.width = w > 0 ? w : kBareMeshWidth;
+    open.height = w > 0 ? h : kBareMeshHeight;
+    if (!o.up.empty()) open.up = *parseUpAxis(o.up);
+    Result<Scene> loaded = openSceneFile(o.scene, open);
     if (!loaded) return bad(loaded.error().what());
     scene = std::move(loaded).value();
-    // A bare mesh is lit by default: its scene was made for it (spec §3b). A .scene keeps
-    // the course's default, unlit.
-    settings.lighting = o.lighting.empty() ? (bareMesh ? Lighting::Gouraud : Lighting::Off)
-                                           : *parseLighting(o.lighting);
     if (!o.texture.empty()) {
-        if (Status st = loadSceneTexture(scene, o.texture)) return bad(st->what());
+        if (Status st = loadSceneTexture(scene, o.texture); !st) return bad(st.error().what());
     }
+    // One rule for what a scene opens with, whichever route opened it (conventions §9): the
+    // viewer's, so a bare mesh and the scene written from it render alike; options override it.
+    applyOpeningSettings(scene, settings);
+    if (!o.shader.empty()) settings.shader = *parseShader(o.shader);
+    if (!o.lighting.empty()) settings.lighting = *parseLighting(o.lighting);
+    if (o.combine) settings.combine = true;
+    if (o.noCombine) settings.combine = false;
     if (settings.shader == ShaderKind::Texture && !scene.texture)
         return bad(o.scene +
                    ": the texture shader needs a texture: the scene names none (line 10 "
@@ -178,26 +234,55 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
                      "%s: warning: %s has no texture coordinates; every pixel samples "
                      "uv = (0, 0)\n",
                      command, scene.meshPath.c_str());
+    // Options the others leave without effect: one line each, naming what they need.
+    auto warn = [command](const char* message) {
+        std::fprintf(stderr, "%s: warning: %s\n", command, message);
+    };
+    if (settings.shader != ShaderKind::Texture) {
+        if (o.combine || o.noCombine)
+            warn("--combine and --no-combine apply to the texture shader (--shader texture)");
+        if (!o.filter.empty()) warn("--filter applies to the texture shader (--shader texture)");
+    }
+    if (o.legend && settings.shader != ShaderKind::Depth)
+        warn("--legend is the depth shader's legend (--shader depth)");
+    if (settings.mode != DrawMode::Solid && (o.supersample > 1 || o.msaa > 1))
+        warn("--supersample and --msaa apply to triangles (--mode solid)");
     if (!bareMesh && w > 0)
         scene.camera = resizedCamera(scene.camera, w, h);  // the horizontal field of view stays
-    // Refused before the renderer allocates anything (limits.hpp).
-    if (auto problem = frameMemoryProblem(scene.camera.width, scene.camera.height,
-                                          settings.supersample, settings.msaa))
-        return bad(*problem);
+    if (!o.eye.empty()) scene.camera.eye = eye;
+    if (!o.look.empty()) scene.camera.look = look;
+    // Refused before --write-scene and before the renderer allocates anything: the engine's
+    // own check (Renderer::render makes the same), so the messages are the library's.
+    if (Status st = checkFrame(scene.camera, settings); !st) return bad(st.error().what());
     if (!o.writeScene.empty()) {
-        if (Status st = writeScene(scene, o.writeScene)) {
-            std::fprintf(stderr, "%s: %s\n", command, st->what().c_str());
+        if (Status st = writeScene(scene, o.writeScene); !st) {
+            std::fprintf(stderr, "%s: %s\n", command, st.error().what().c_str());
             return kFailed;
         }
     }
     return kOk;
 }
 
-void printFrameTimes(std::vector<double> ms) {
+Status writeOutput(const Framebuffer& frame, const std::string& output) {
+    if (output != "-") return writePng(frame, output);
+    Result<std::string> bytes = encodePng(frame);
+    if (!bytes) return bytes.error();
+    if (std::fwrite(bytes.value().data(), 1, bytes.value().size(), stdout) !=
+            bytes.value().size() ||
+        std::fflush(stdout) != 0)
+        return Error{{"standard output", 0}, "cannot write the PNG"};
+    return {};
+}
+
+std::FILE* reportStream(const std::string& output) {
+    return output == "-" ? stderr : stdout;
+}
+
+void printFrameTimes(std::vector<double> ms, std::FILE* out) {
     if (ms.size() < 2) return;
     const FrameTimes t = summarize(std::move(ms));
-    std::printf("median %.3f ms (min %.3f, max %.3f) over %d frames\n", t.median, t.min, t.max,
-                t.frames);
+    std::fprintf(out, "median %.3f ms (min %.3f, max %.3f) over %d frames\n", t.median, t.min,
+                 t.max, t.frames);
 }
 
 }  // namespace facet::app

@@ -3,11 +3,14 @@
 // sub-commands, one function that turns them into a loaded scene and RenderSettings, and one
 // timing summary, so the two commands draw the same picture from the same command line.
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "facet/error.hpp"
+#include "facet/framebuffer.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
@@ -18,16 +21,20 @@ struct RenderOptions {
     std::string scene;
     std::string output;
     std::string mode = "solid";
-    std::string shader = "painter";
+    std::string shader;  ///< empty: what the scene opens with (applyOpeningSettings)
     std::string interp = "perspective";
-    std::string lighting;  ///< empty: off for a .scene, gouraud for a bare mesh
-    std::string filter = "bilinear";
+    std::string lighting;  ///< empty: what the scene opens with (applyOpeningSettings)
+    std::string filter;    ///< empty: bilinear
     std::string texture;
     std::string size;
+    std::string up;          ///< --up x|y|z: the axis a bare mesh stands on (conventions §3b)
+    std::string eye;         ///< --eye X,Y,Z: the camera position, replacing the scene's
+    std::string look;        ///< --look X,Y,Z: the look-at point, replacing the scene's
     std::string writeScene;  ///< --write-scene: save the scene (after --size, --texture) here
     std::string background = "5C5C5C";
     bool cull = false;
-    bool combine = false;
+    bool combine = false;    ///< --combine: on whatever the scene opens with
+    bool noCombine = false;  ///< --no-combine: off whatever the scene opens with
     bool normals = false;
     double normalLength = 0.0;
     bool legend = false;
@@ -53,7 +60,13 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& 
 int prepareRender(const RenderOptions& options, const char* command, Scene& scene,
                   RenderSettings& settings);
 
-/// Prints `median X ms (min, max) over N frames` when more than one frame was timed.
-void printFrameTimes(std::vector<double> ms);
+/// Prints `median X ms (min, max) over N frames` to `out` when more than one frame was timed.
+void printFrameTimes(std::vector<double> ms, std::FILE* out = stdout);
+
+/// Writes the frame to -o: a PNG file, or the PNG's bytes on standard output for "-".
+Status writeOutput(const Framebuffer& frame, const std::string& output);
+
+/// Where a command's report goes: stderr when -o - puts the image on stdout.
+std::FILE* reportStream(const std::string& output);
 
 }  // namespace facet::app

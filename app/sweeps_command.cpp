@@ -82,9 +82,9 @@ int runSweeps(const SweepsOptions& o) {
         }
     }
     if (!o.noChart) {
-        if (Status st = checkGnuplot(o.gnuplot)) {
+        if (Status st = checkGnuplot(o.gnuplot); !st) {
             std::fprintf(stderr, "%s\n(--no-chart writes the CSV files only)\n",
-                         st->what().c_str());
+                         st.error().what().c_str());
             return kBadInput;
         }
     }
@@ -127,8 +127,8 @@ int runSweeps(const SweepsOptions& o) {
             "ground truth " + std::to_string(o.samples) + "x" + std::to_string(o.samples) +
                 " samples; " + std::to_string(o.frames) + " timed frames per point" +
                 (o.quick ? "; quick" : "")};
-        if (Status st = writeSweepCsv(csv, table, notes)) {
-            std::fprintf(stderr, "%s\n", st->what().c_str());
+        if (Status st = writeSweepCsv(csv, table, notes); !st) {
+            std::fprintf(stderr, "%s\n", st.error().what().c_str());
             code = kFailed;
             continue;
         }
@@ -147,8 +147,9 @@ int runSweeps(const SweepsOptions& o) {
                 o.gnuplot, {"-e",
                             "datafile=" + gpString(csv) + "; outfile=" + gpString(png) +
                                 "; title=" + gpString(title),
-                            script})) {
-            std::fprintf(stderr, "%s\n", st->what().c_str());
+                            script});
+            !st) {
+            std::fprintf(stderr, "%s\n", st.error().what().c_str());
             code = kFailed;
             continue;
         }

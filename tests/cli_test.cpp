@@ -1,6 +1,7 @@
 // The facet command line as a user meets it: real processes, real files, exit codes and the
 // one-line error messages promised for bad input.
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,6 +21,7 @@
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"
 #include "facet/texture.hpp"
+#include "facet/version.hpp"
 #include "run_process.hpp"
 #include "shared_data.hpp"
 
@@ -187,10 +189,11 @@ TEST_F(Cli, StatsReportVaryingsAndBytesPerVertex) {
     // A depth image needs no normals even with lighting on.
     EXPECT_NE(stats("--shader depth --lighting phong").find("per vertex: 28 bytes; varyings: 1 "),
               std::string::npos);
-    // A mesh without colours interpolates depth only.
+    // A mesh without colours, unlit, interpolates depth only (it opens lit: conventions §9).
     std::ofstream(out("plain.scene")) << FACET_TEST_DATA << "/off_no_colors.off\n0 0 -4\n0 0 0\n"
                                       << "0 -1 0\n200\n64 48\n1\n0 0 -8 1\n0.5 0.5 0.5 1\n";
-    const Outcome r = run("render " + out("plain.scene") + " -o " + out("p.png") + " --stats");
+    const Outcome r =
+        run("render " + out("plain.scene") + " -o " + out("p.png") + " --stats --lighting off");
     EXPECT_NE(r.out.find("per vertex: 28 bytes; varyings: 1 floats (1/w)"), std::string::npos)
         << r.out;
 }
@@ -209,6 +212,13 @@ TEST_F(Cli, HelpListsTheOptions) {
                             "--background", "--texture", "--filter", "--combine", "--normals",
                             "--normal-length", "--legend", "subdivided", "--view", "bin-load"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+TEST_F(Cli, VersionPrintsTheProjectVersion) {
+    const Outcome r = run("--version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, std::string("facet ") + facet::kVersionString + "\n");
+    EXPECT_NE(run("--help").out.find("--version"), std::string::npos);
 }
 
 // --view NAME writes the debug view: the PNG holds exactly the image Renderer::render() makes
@@ -584,13 +594,48 @@ TEST_F(Cli, ABareMeshRendersLitAndItsSavedSceneRendersTheSameBytes) {
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_NE(r.out.find("lighting gouraud"), std::string::npos) << r.out;  // lit by default
     EXPECT_EQ(pngSize(out("a.png")), std::make_pair(640, 400));
-    // The saved scene holds the scene, not the settings: the same options give the same bytes.
-    r = run("render " + out("teapot.scene") + " -o " + out("b.png") + " --lighting gouraud");
+    // The saved scene opens by the same rule as the mesh (conventions §9): with no options it
+    // renders the same bytes.
+    r = run("render " + out("teapot.scene") + " -o " + out("b.png"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_EQ(fileBytes(out("a.png")), fileBytes(out("b.png")));
     const std::string text = fileBytes(out("teapot.scene"));
     EXPECT_EQ(text.find(kModelsDir), std::string::npos) << "relative path expected:\n" << text;
     EXPECT_NE(text.find("\n640 400\n"), std::string::npos) << text;
+}
+
+// One set of defaults (conventions §9, applyOpeningSettings): Spot's scene names a texture and
+// its mesh has no colours, so it opens textured, combined and lit, as the viewer opens it; a
+// course scene (coloured mesh) stays unlit painter. Options override each part.
+TEST_F(Cli, ScenesOpenWithTheDefaultsOfTheirContents) {
+    const std::string spot = facet::test::sharedData("scenes/spot_1280x720.scene");
+    REQUIRE_SHARED_DATA(spot);
+    Outcome r = run("render " + spot + " -o " + out("default.png") + " --size 320x180");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("texture"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("combined"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("lighting gouraud"), std::string::npos) << r.out;
+    r = run("render " + spot + " -o " + out("explicit.png") +
+            " --size 320x180 --shader texture --combine --lighting gouraud");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(fileBytes(out("default.png")), fileBytes(out("explicit.png")));
+    r = run("render " + spot + " -o " + out("flat.png") +
+            " --size 320x180 --shader painter --lighting off");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(fileBytes(out("default.png")), fileBytes(out("flat.png")));
+    // --no-combine turns the default off; with --combine it is refused.
+    r = run("render " + spot + " -o " + out("texel.png") + " --size 320x180 --no-combine");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(r.out.find("combined"), std::string::npos) << r.out;
+    EXPECT_EQ(run("render " + spot + " -o " + out("x.png") + " --combine --no-combine").exitCode,
+              2);
+
+    const std::string course = facet::test::sharedData("course/example0.scene");
+    REQUIRE_SHARED_DATA(course);
+    r = run("render " + course + " -o " + out("course.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("painter"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("lighting off"), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, AResizedScenesSavedCopyRendersTheSameBytes) {
@@ -619,6 +664,119 @@ TEST_F(Cli, AFileThatIsNoSceneOrMeshSaysWhatWasExpected) {
     r = run("render " + out("tri.obj") + " -o " + out("x.png"));
     EXPECT_EQ(r.exitCode, 0) << r.out;
     EXPECT_EQ(r.out.find("must end in"), std::string::npos) << r.out;
+}
+
+// Typos get a suggestion by edit distance: a misspelt command and a misspelt option, each on one
+// line with exit code 2; a word near nothing lists the commands.
+TEST_F(Cli, MisspeltCommandsAndOptionsGetASuggestion) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    Outcome r = run("rendr " + scene + " -o " + out("x.png"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("unknown command 'rendr': did you mean 'render'?"), std::string::npos)
+        << r.out;
+    r = run("render " + scene + " -o " + out("x.png") + " --lightng phong");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("unknown option '--lightng' for 'render': did you mean '--lighting'?"),
+              std::string::npos)
+        << r.out;
+    r = run("frobnicate");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("unknown command 'frobnicate' (the commands: render,"), std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(out("x.png")));
+}
+
+// A pipe or a device is refused before anything reads it: a FIFO nobody writes to would block
+// a read forever, /dev/zero would never end.
+TEST_F(Cli, PipesAndDevicesAreRefusedBeforeReading) {
+    const std::string fifo = out("pipe.scene");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const std::string& path : {fifo, std::string("/dev/zero")}) {
+        // timeout: a regression fails in seconds instead of hanging the suite.
+        const Outcome r = facet_test::runCommand("timeout 20 " + std::string(FACET_CLI) +
+                                                 " render " + path + " -o " + out("x.png"));
+        EXPECT_EQ(r.exitCode, 2) << path;
+        EXPECT_NE(r.out.find(path + ": is not a regular file"), std::string::npos) << r.out;
+        EXPECT_EQ(countLines(r.out), 1) << r.out;
+    }
+}
+
+// -o by extension: PNG only, anything else refused before rendering with a clear line (no
+// PNG bytes under a .jpg name); -o - puts the PNG on standard output and the report on stderr.
+TEST_F(Cli, OutputIsAPngFileOrStandardOutput) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    Outcome r = run("render " + scene + " -o " + out("x.jpg"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("only PNG is written"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(out("x.jpg")));
+    ASSERT_EQ(run("render " + scene + " -o " + out("file.PNG") + " --size 64x36").exitCode, 0);
+    // The braces keep runCommand's 2>&1 off the redirected stdout.
+    r = facet_test::runCommand("{ " + std::string(FACET_CLI) + " render " + scene +
+                               " --size 64x36 -o - > " + out("piped.png") + "; }");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("wrote - (64x36"), std::string::npos) << r.out;  // the report, stderr
+    EXPECT_EQ(fileBytes(out("piped.png")), fileBytes(out("file.PNG")));
+    EXPECT_FALSE(fs::exists("-"));
+}
+
+// A Z-up model (Nefertiti, a scan) is framed standing with --up z (conventions §3b): the written
+// scene's y hint is -Z, and the image differs from the default +Y framing; --up on a .scene has
+// no effect and is refused naming what it needs; --eye and --look replace the camera's pose.
+TEST_F(Cli, UpEyeAndLookFrameABareMesh) {
+    const std::string nefertiti = kModelsDir + "/nefertiti.obj";
+    REQUIRE_SHARED_DATA(nefertiti);
+    Outcome r = run("render " + nefertiti + " -o " + out("z.png") + " --size 160x120 --up z" +
+                    " --write-scene " + out("z.scene"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const facet::Result<facet::Scene> zUp =
+        facet::parseScene(fileBytes(out("z.scene")), out("z.scene"));
+    ASSERT_TRUE(zUp) << zUp.error().what();
+    EXPECT_EQ(zUp.value().camera.up, glm::dvec3(0, 0, -1));
+    ASSERT_EQ(run("render " + nefertiti + " -o " + out("y.png") + " --size 160x120").exitCode, 0);
+    EXPECT_NE(fileBytes(out("z.png")), fileBytes(out("y.png")));
+
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    r = run("render " + scene + " -o " + out("x.png") + " --up z");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("--up frames a bare .off/.obj mesh"), std::string::npos) << r.out;
+
+    r = run("render " + scene + " -o " + out("moved.png") + " --size 64x36 --eye 0,0,4 " +
+            "--look 0,0,0 --write-scene " + out("moved.scene"));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const facet::Result<facet::Scene> moved =
+        facet::parseScene(fileBytes(out("moved.scene")), out("moved.scene"));
+    ASSERT_TRUE(moved) << moved.error().what();
+    EXPECT_EQ(moved.value().camera.eye, glm::dvec3(0, 0, 4));
+    EXPECT_EQ(moved.value().camera.look, glm::dvec3(0, 0, 0));
+    r = run("render " + scene + " -o " + out("x.png") + " --eye 1,2");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("--eye wants X,Y,Z"), std::string::npos) << r.out;
+    r = run("render " + scene + " -o " + out("x.png") + " --eye 0,0,0 --look 0,0,0");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("look-at point equals the camera position"), std::string::npos) << r.out;
+}
+
+// An option the others leave without effect is a one-line warning naming what it needs; the image
+// is still written.
+TEST_F(Cli, OptionsWithoutEffectWarnNamingWhatTheyNeed) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    const auto warnings = [&](const std::string& opts) {
+        const Outcome r = run("render " + scene + " -o " + out("w.png") + " --size 64x36 " + opts);
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        return r.out;
+    };
+    EXPECT_NE(warnings("--combine")
+                  .find("warning: --combine and --no-combine apply to the "
+                        "texture shader (--shader texture)"),
+              std::string::npos);
+    EXPECT_NE(warnings("--filter nearest").find("warning: --filter applies to the texture shader"),
+              std::string::npos);
+    EXPECT_NE(warnings("--legend").find("warning: --legend is the depth shader's legend"),
+              std::string::npos);
+    EXPECT_NE(warnings("--mode wireframe --msaa 4").find("warning: --supersample and --msaa apply"),
+              std::string::npos);
+    EXPECT_EQ(warnings("--shader depth --legend").find("warning"), std::string::npos);
+    EXPECT_EQ(warnings("").find("warning"), std::string::npos);
 }
 
 }  // namespace

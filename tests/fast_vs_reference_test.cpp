@@ -159,7 +159,7 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     const facet::reference::Image ref = facet::reference::render(*scene, settings);
     facet::Renderer renderer;
     facet::Framebuffer fast;
-    const facet::RenderStats stats = renderer.render(*scene, settings, fast);
+    const facet::RenderStats stats = renderer.render(*scene, settings, fast).value();
     ASSERT_EQ(fast.width, ref.width);
     ASSERT_EQ(fast.height, ref.height);
 

@@ -303,7 +303,7 @@ TEST_P(InspectRealScene, FinalColourIsTheFramesPixelAtManyPixels) {
     Scene scene = std::move(loaded).value();
     // The course's textured scene names no image: the course's brick, as its tests use.
     if (c.settings.shader == ShaderKind::Texture && !scene.texture) {
-        ASSERT_FALSE(loadSceneTexture(scene, test::sharedData("course/brick.jpg")));
+        ASSERT_TRUE(loadSceneTexture(scene, test::sharedData("course/brick.jpg")));
     }
     // A smaller frame keeps the test quick; every pixel is still a real one of that frame.
     scene.camera = resizedCamera(scene.camera, 160, 120);
@@ -342,7 +342,7 @@ Scene loadShared(const std::string& relative, int width, int height) {
     Scene scene = std::move(loaded).value();
     scene.camera = resizedCamera(scene.camera, width, height);
     // The course's textured scene names no image: the course's brick, as its tests use.
-    if (!scene.texture && loadSceneTexture(scene, test::sharedData("course/brick.jpg"))) return {};
+    if (!scene.texture && !loadSceneTexture(scene, test::sharedData("course/brick.jpg"))) return {};
     return scene;
 }
 
@@ -480,9 +480,9 @@ TEST(InspectCli, PrintsTheHistoryOfTheSharedEdgePixel) {
     fs::create_directories(dir);
     Scene scene = twoTrianglesAndABackOne();
     scene.meshPath = (dir / "two.off").string();
-    ASSERT_FALSE(writeOff(*scene.mesh, scene.meshPath));
+    ASSERT_TRUE(writeOff(*scene.mesh, scene.meshPath));
     const std::string sceneFile = (dir / "two.scene").string();
-    ASSERT_FALSE(writeScene(scene, sceneFile));
+    ASSERT_TRUE(writeScene(scene, sceneFile));
 
     const Outcome r = runCli("inspect " + sceneFile + " 20 20 --truth-samples 4");
     EXPECT_EQ(r.exitCode, 0) << r.out;

@@ -498,9 +498,9 @@ void renderBunny(benchmark::State& state) {
     settings.threads = static_cast<int>(state.range(0));
     Renderer renderer;
     Framebuffer frame;
-    RenderStats stats = renderer.render(*scene, settings, frame);  // scratch buffers, once
+    RenderStats stats = renderer.render(*scene, settings, frame).value();  // scratch buffers, once
     for (auto _ : state) {
-        stats = renderer.render(*scene, settings, frame);
+        stats = renderer.render(*scene, settings, frame).value();
         benchmark::DoNotOptimize(frame.color.data());
     }
     state.SetItemsProcessed(state.iterations());

@@ -46,7 +46,7 @@ TEST(NearPlane, CameraThroughTheBunnyStaysFiniteAndMatchesTheReference) {
         for (Interp interp : {Interp::Perspective, Interp::Affine}) {
             RenderSettings s;
             s.interp = interp;
-            const RenderStats stats = renderer.render(scene, s, fb);
+            const RenderStats stats = renderer.render(scene, s, fb).value();
             clippedFrames += stats.trianglesClipped > 0;
             for (float d : fb.depth) ASSERT_FALSE(std::isnan(d)) << "frame " << frame;
             for (float d : fb.depth)

@@ -101,8 +101,8 @@ inline const Scene* loadCached(const std::string& name, std::string& error) {
     auto scene = std::make_unique<Scene>(std::move(loaded).value());
     if (!textureFor(name).empty()) {
         const std::string image = sharedData(textureFor(name));
-        if (Status st = loadSceneTexture(*scene, image)) {
-            error = st->what();
+        if (Status st = loadSceneTexture(*scene, image); !st) {
+            error = st.error().what();
             return nullptr;
         }
     }

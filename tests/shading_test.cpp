@@ -184,7 +184,7 @@ TEST(Shading, NormalsDisplayDrawsRedSegmentsWithTheDepthTest) {
     set.normalLength = 1.0;
     facet::Renderer r;
     Framebuffer f;
-    const facet::RenderStats st = r.render(s, set, f);
+    const facet::RenderStats st = r.render(s, set, f).value();
     EXPECT_EQ(st.normalsDrawn, 4u);
     int red = 0;
     for (const std::uint32_t p : f.color) red += p == facet::packRgba(255, 0, 0);
@@ -290,7 +290,7 @@ TEST(Shading, DepthLegendShowsTheBarAndTheRange) {
     set.depthLegend = true;
     facet::Renderer r;
     Framebuffer f;
-    const facet::RenderStats st = r.render(s, set, f);
+    const facet::RenderStats st = r.render(s, set, f).value();
     EXPECT_FLOAT_EQ(st.depthNear, st.depthFar);  // a square facing the camera: one depth
     // Scale 2 at this height: margin 8, bar 12 px high starting 8 px inside the box.
     const int barTop = f.height - 8 - (12 + 10 + 24) + 8;

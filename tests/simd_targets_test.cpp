@@ -103,7 +103,7 @@ void expectEveryTargetGivesTheScalarSamples(const Scene& scene, const RenderSett
         const std::string name = what + " msaa" + std::to_string(n);
         Framebuffer scalarFrame;
         detail::enableSpanLoops(false);
-        const RenderStats expected = renderer.render(scene, settings, scalarFrame);
+        const RenderStats expected = renderer.render(scene, settings, scalarFrame).value();
         const Framebuffer scalarSamples = renderer.samples();
         detail::enableSpanLoops(true);
         ASSERT_GT(expected.fragments, 0u) << name;
@@ -114,7 +114,7 @@ void expectEveryTargetGivesTheScalarSamples(const Scene& scene, const RenderSett
             ASSERT_STREQ(detail::spanTarget(), hwy::TargetName(target));
             expectMsaaSpanLoop();
             Framebuffer frame;
-            const RenderStats actual = renderer.render(scene, settings, frame);
+            const RenderStats actual = renderer.render(scene, settings, frame).value();
             EXPECT_EQ(actual.fragments, expected.fragments) << name;
             const Diffs samples = differences(scalarSamples, renderer.samples());
             const Diffs pixels = differences(scalarFrame, frame);
@@ -147,14 +147,14 @@ void expectEveryTargetGivesTheScalarImage(const Scene& scene, const std::string&
         Renderer renderer;
         Framebuffer scalar;
         detail::enableSpanLoops(false);
-        const RenderStats expected = renderer.render(scene, settings, scalar);
+        const RenderStats expected = renderer.render(scene, settings, scalar).value();
         detail::enableSpanLoops(true);
         ASSERT_GT(expected.fragments, 0u) << caseName(c);
         for (const std::int64_t target : targets) {
             hwy::SetSupportedTargetsForTest(target);
             ASSERT_STREQ(detail::spanTarget(), hwy::TargetName(target));
             Framebuffer vector;
-            const RenderStats actual = renderer.render(scene, settings, vector);
+            const RenderStats actual = renderer.render(scene, settings, vector).value();
             EXPECT_EQ(actual.fragments, expected.fragments) << caseName(c);
             std::size_t colorDiffs = 0, depthDiffs = 0;
             for (std::size_t i = 0; i < scalar.color.size(); ++i) {

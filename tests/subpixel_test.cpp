@@ -251,7 +251,8 @@ TEST(SubPixelBits, NonFiniteAndHugeInputsStaySafeAtCoarseGrids) {
         for (const ShaderKind shader :
              {ShaderKind::Simple, ShaderKind::Painter, ShaderKind::Depth}) {
             s.shader = shader;
-            const RenderStats stats = renderer.draw({.clip = clip, .indices = all}, s, frame);
+            const RenderStats stats =
+                renderer.draw({.clip = clip, .indices = all}, s, frame).value();
             EXPECT_LE(stats.fragments, 2u * kW * kH);
         }
     }

@@ -162,7 +162,10 @@ TEST(SweepCameraPaths, EveryFrameMatchesTheReferenceWithoutNaN) {
         EXPECT_LT(p.msMax, kPointBudgetMs) << what;
         EXPECT_LT(p.refMs, kReferenceBudgetMs) << what;
         EXPECT_EQ(p.width, 64) << what;
-        EXPECT_GT(p.triangles, 0u) << what;
+        // A camera the engine refuses (checkFrame) submits nothing.
+        if (!p.degenerate) {
+            EXPECT_GT(p.triangles, 0u) << what;
+        }
         // The y hint exactly on the view axis: the camera is invalid and nothing draws.
         if (p.path.starts_with("up_hint_")) {
             EXPECT_EQ(p.degenerate, p.param == 0.0) << what;

@@ -63,9 +63,9 @@ TEST_P(ThreadCount, GivesTheOneThreadImage) {
     settings.threads = 1;
     Renderer one, many;
     Framebuffer expected, actual;
-    const RenderStats a = one.render(*scene, settings, expected);
+    const RenderStats a = one.render(*scene, settings, expected).value();
     settings.threads = c.threads;
-    const RenderStats b = many.render(*scene, settings, actual);
+    const RenderStats b = many.render(*scene, settings, actual).value();
     ASSERT_GT(a.fragments, 0u);
     EXPECT_EQ(a.fragments, b.fragments);
     EXPECT_EQ(a.trianglesRasterized, b.trianglesRasterized);

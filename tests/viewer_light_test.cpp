@@ -177,7 +177,7 @@ TEST(Framing, TheBoundingSphereFitsTheNarrowerFieldOfView) {
     EXPECT_EQ(framingDistance(1.0, 500.0, 480, 640), d);
 
     ViewerModel m;
-    ASSERT_FALSE(m.load(kDefaultScene));
+    ASSERT_TRUE(m.load(kDefaultScene));
     m.prepareFrame(1280, 720);
     m.zoom(-20.0);  // far away
     m.rotate(200.0, 50.0);
@@ -290,7 +290,7 @@ TEST(FrameStats, TheEngineStagesComeFromTheFrameOfTheirTotal) {
 
 TEST(FrameStats, TheRealEnginesStagesNeverExceedItsTotal) {
     ViewerModel m;
-    ASSERT_FALSE(m.load(kDefaultScene));
+    ASSERT_TRUE(m.load(kDefaultScene));
     m.settings.lighting = Lighting::Phong;
     m.settings.showNormals = true;
     m.prepareFrame(320, 180);

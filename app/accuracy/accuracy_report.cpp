@@ -80,7 +80,7 @@ Status writeAccuracyCsv(const std::string& path, const MachineInfo& machine, int
     }
     out.close();
     if (!out) return Error{{path, 0}, "write failed"};
-    return std::nullopt;
+    return {};
 }
 
 Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
@@ -171,7 +171,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
     std::error_code ec;
     fs::remove(dataPath, ec);
     fs::remove(scriptPath, ec);
-    if (!st && !fs::exists(path)) return Error{{path, 0}, "gnuplot ran but wrote no chart"};
+    if (st && !fs::exists(path)) return Error{{path, 0}, "gnuplot ran but wrote no chart"};
     return st;
 }
 

@@ -90,7 +90,18 @@ CameraPoint measure(const std::string& path, const std::string& lbl, int step, d
     // noise; one thread's time is the frame's own cost.
     s.threads = 1;
     RenderStats stats;
-    const FrameTimes times = timeRepeated(frames, [&] { stats = renderer.render(scene, s, fb); });
+    bool refused = false;
+    const FrameTimes times = timeRepeated(frames, [&] {
+        Result<RenderStats> r = renderer.render(scene, s, fb);
+        refused = !r;
+        if (r) stats = r.value();
+    });
+    if (refused) {
+        // A camera the engine refuses (checkFrame) draws nothing: the frame is the background,
+        // which is what the reference must agree with.
+        (void)fb.resize(scene.camera.width, scene.camera.height);
+        fb.clear(rgbaFromHex(s.background));
+    }
     p.frames = times.frames;
     p.ms = times.median;
     p.msMin = times.min;

@@ -243,7 +243,7 @@ ExtremePoint measure(const Case& c, int step, int w, int h, int frames, Renderer
     for (int f = 0; f <= std::max(1, frames); ++f) {
         fb.clear(background);
         const Clock::time_point t0 = Clock::now();
-        stats = renderer.draw(input, s, fb);
+        if (Result<RenderStats> r = renderer.draw(input, s, fb)) stats = r.value();
         const double t = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
         if (f > 0) us.push_back(t);
     }

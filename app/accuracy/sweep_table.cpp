@@ -47,7 +47,7 @@ Status writeSweepCsv(const std::string& path, const SweepTable& table,
     for (const auto& row : table.rows) line(row);
     out.flush();
     if (!out) return Error{{path, 0}, "writing the sweep's CSV failed"};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet::app

@@ -59,7 +59,7 @@ Status runGnuplot(const std::string& gnuplot, const std::vector<std::string>& ar
     }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         return Error{{gnuplot, 0}, "gnuplot failed (its messages are above)"};
-    return std::nullopt;
+    return {};
 }
 
 /// Writes the data file, runs `script` with the variables, removes the data file.
@@ -83,7 +83,7 @@ Status plot(const ChartRequest& req, const std::string& script, const std::strin
     Status st = runGnuplot(req.gnuplot, {"-e", variables, scriptPath}, false);
     std::error_code ec;
     fs::remove(dataPath, ec);
-    if (!st && !fs::exists(req.output))
+    if (st && !fs::exists(req.output))
         return Error{{req.output, 0}, "gnuplot ran but wrote no chart"};
     return st;
 }

@@ -67,7 +67,7 @@ Status writeBenchCsv(const std::string& path, const MachineInfo& machine, const 
     for (const Measurement& m : results.all) out << row(m) << "\n";
     out.close();
     if (!out) return Error{{path, 0}, "cannot write the CSV"};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet::app

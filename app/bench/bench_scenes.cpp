@@ -136,7 +136,7 @@ std::string completeForTexturing(Scene& scene, const std::string& fallbackTextur
     }
     if (!scene.texture) {
         if (!fallbackTexture.empty() && std::filesystem::exists(fallbackTexture) &&
-            !loadSceneTexture(scene, fallbackTexture)) {
+            loadSceneTexture(scene, fallbackTexture)) {
             added += std::string(added.empty() ? "" : ", ") + "texture " +
                      std::filesystem::path(fallbackTexture).filename().string();
         } else {

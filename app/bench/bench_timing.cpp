@@ -46,10 +46,11 @@ EngineTimes timeEngine(Renderer& renderer, const BenchCase& c, const BenchConfig
     std::vector<double> frontEnd, binning, raster;
     EngineTimes t;
     t.times = timeFrames(plan, [&] {
-        const RenderStats stats = renderer.render(c.scene, settings, target);
-        frontEnd.push_back(stats.frontEndMs);
-        binning.push_back(stats.binningMs);
-        raster.push_back(stats.rasterMs);
+        const Result<RenderStats> stats = renderer.render(c.scene, settings, target);
+        if (!stats) return false;
+        frontEnd.push_back(stats->frontEndMs);
+        binning.push_back(stats->binningMs);
+        raster.push_back(stats->rasterMs);
         return true;
     });
     // The warm-up frames came first: the timed ones are the last `frames`.

@@ -60,22 +60,22 @@ int runGlPeer(const BenchOptions& o) {
 
         const std::string what = c->name + " " + config->name;
         GlStats stats;
-        if (Status st = renderer->upload(c->scene, config->settings, stats))
-            return fail(what + ": " + st->what());
+        if (Status st = renderer->upload(c->scene, config->settings, stats); !st)
+            return fail(what + ": " + st.error().what());
         std::string error;
         const FrameTimes t = timeFrames(plan, [&] {
             const Status st = renderer->draw(c->scene, config->settings, stats);
-            if (st) error = st->what();
-            return !st;
+            if (!st) error = st.error().what();
+            return bool(st);
         });
         if (!error.empty()) return fail(what + ": " + error);
         // The picture for --images: one readback, untimed.
         if (!o.images.empty()) {
-            if (Status st = renderer->readBack(c->scene, config->settings, frame, stats))
-                return fail(what + ": " + st->what());
+            if (Status st = renderer->readBack(c->scene, config->settings, frame, stats); !st)
+                return fail(what + ": " + st.error().what());
             const auto path = std::filesystem::path(o.images) /
                               (c->name + "_" + config->name + "_" + tag + ".png");
-            if (Status st = writePng(frame, path.string())) return fail(st->what());
+            if (Status st = writePng(frame, path.string()); !st) return fail(st.error().what());
         }
         // Last: the parent goes on to its next measurement as soon as it reads this line.
         say("result " + what + " " + std::to_string(t.frames) + " " + std::to_string(t.median) +

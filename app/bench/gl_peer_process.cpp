@@ -85,12 +85,12 @@ struct GlPeerProcess::State {
             return std::make_pair(event, rest);
         }
         std::free(buf);
-        if (Status st = finish()) return *st;
+        if (Status st = finish(); !st) return st.error();
         return peerError("ended without answering");
     }
 
     Status finish() {
-        if (finished) return std::nullopt;
+        if (finished) return {};
         finished = true;
         // Ending its input ends the peer's loop.
         shutdown(socket, SHUT_WR);
@@ -99,7 +99,7 @@ struct GlPeerProcess::State {
         int status = 0;
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
         }
-        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return std::nullopt;
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
         return peerError(WIFSIGNALED(status)
                              ? "killed by signal " + std::to_string(WTERMSIG(status))
                              : "exited with status " + std::to_string(WEXITSTATUS(status)));
@@ -164,7 +164,7 @@ Result<FrameTimes> GlPeerProcess::measure(const std::string& caseName, const std
     if (send(state_->socket, command.data(), command.size(), MSG_NOSIGNAL) !=
         static_cast<ssize_t>(command.size())) {
         const std::string why = std::strerror(errno);
-        if (Status st = state_->finish()) return *st;
+        if (Status st = state_->finish(); !st) return st.error();
         return peerError("cannot send: " + why);
     }
     Result<std::pair<std::string, std::string>> line = state_->next();

@@ -124,7 +124,7 @@ Result<GlContext> GlContext::createHeadless() {
     result.context_ = createCoreContext(display, config);
     if (result.context_ == EGL_NO_CONTEXT)
         return eglError("the driver grants no OpenGL 3.3 core context");
-    if (Status st = result.makeCurrent()) return *st;
+    if (Status st = result.makeCurrent(); !st) return st.error();
     result.description_ = glString(GL_RENDERER) + " | " + glString(GL_VERSION) + " | " + how;
     return result;
 }
@@ -153,7 +153,7 @@ GlContext::~GlContext() {
 Status GlContext::makeCurrent() const {
     if (!eglMakeCurrent(display_, surface_, surface_, context_))
         return eglError("cannot make the OpenGL context current");
-    return std::nullopt;
+    return {};
 }
 
 void GlContext::release() {

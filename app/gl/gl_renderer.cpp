@@ -169,7 +169,7 @@ std::size_t uploadNormals(RendererState& s, const Scene& scene, const RenderSett
 /// Draws the normals display after the main pass; under the depth test except with Simple, as
 /// in the engine.
 Status drawNormals(RendererState& s, const RenderSettings& settings, const FrameUniforms& u) {
-    if (s.segments.empty()) return std::nullopt;
+    if (s.segments.empty()) return {};
     const Variant lines{.mode = DrawMode::Wireframe};
     const Result<GLuint> program = programFor(s, definesFor(lines, s.clipControl));
     if (!program) return program.error();
@@ -178,7 +178,7 @@ Status drawNormals(RendererState& s, const RenderSettings& settings, const Frame
     useProgram(program.value(), u, glm::vec3(1.0f, 0.0f, 0.0f));
     s.normals.bind();
     drawLines(false, s.segments.size(), s.segments.size());
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
@@ -240,9 +240,9 @@ GlRenderer::~GlRenderer() = default;
 Result<GlStats> GlRenderer::render(const Scene& scene, const RenderSettings& settings,
                                    Framebuffer& frame) {
     GlStats stats;
-    if (Status st = upload(scene, settings, stats)) return *st;
-    if (Status st = draw(scene, settings, stats)) return *st;
-    if (Status st = readBack(scene, settings, frame, stats)) return *st;
+    if (Status st = upload(scene, settings, stats); !st) return st.error();
+    if (Status st = draw(scene, settings, stats); !st) return st.error();
+    if (Status st = readBack(scene, settings, frame, stats); !st) return st.error();
     return stats;
 }
 
@@ -271,7 +271,7 @@ Status GlRenderer::upload(const Scene& scene, const RenderSettings& settings, Gl
     s.residentTexture = v.texture ? scene.texture : nullptr;
     s.residentKey = residentKey(defines, settings);
     stats.uploadMs += msBetween(t0, Clock::now());
-    return std::nullopt;
+    return {};
 }
 
 Status GlRenderer::draw(const Scene& scene, const RenderSettings& settings, GlStats& stats) {
@@ -289,7 +289,7 @@ Status GlRenderer::draw(const Scene& scene, const RenderSettings& settings, GlSt
     const StateGuard guard(s.clipControl);
     // Multisampling as the engine does it: triangles only (Solid mode).
     const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
-    if (Status st = s.target.resize(cam.width, cam.height, samples)) return *st;
+    if (Status st = s.target.resize(cam.width, cam.height, samples); !st) return st.error();
     const Result<GLuint> program = programFor(s, defines);
     if (!program) return program.error();
     const float nearPlane = static_cast<float>(resolveNearPlane(settings, mesh));
@@ -345,7 +345,7 @@ Status GlRenderer::draw(const Scene& scene, const RenderSettings& settings, GlSt
             s.target.bind();
         }
         stats.normalsDrawn = s.segments.size() / 2;
-        if (Status st = drawNormals(s, settings, u)) return *st;
+        if (Status st = drawNormals(s, settings, u); !st) return st.error();
     }
     // The draw's time is the CPU clock up to glFinish: on llvmpipe that is exactly the work
     // (its GL_TIME_ELAPSED queries came back as noise: 0.5–3.8 ms for a 12 ms draw, and
@@ -355,7 +355,7 @@ Status GlRenderer::draw(const Scene& scene, const RenderSettings& settings, GlSt
     s.drawnWidth = cam.width;
     s.drawnHeight = cam.height;
     stats.drawMs += msBetween(t0, Clock::now());
-    return std::nullopt;
+    return {};
 }
 
 Status GlRenderer::readBack(const Scene& scene, const RenderSettings& settings, Framebuffer& frame,
@@ -379,7 +379,7 @@ Status GlRenderer::readBack(const Scene& scene, const RenderSettings& settings, 
             drawDepthLegend(frame, range.nearest, range.farthest);
     }
     stats.readbackMs += msBetween(t0, Clock::now());
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet

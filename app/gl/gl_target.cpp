@@ -7,8 +7,7 @@ namespace facet::gl {
 
 Status RenderTarget::resize(int width, int height, int samples) {
     samples = std::max(samples, 1);
-    if (fbo_.get() != 0 && width == width_ && height == height_ && samples == samples_)
-        return std::nullopt;
+    if (fbo_.get() != 0 && width == width_ && height == height_ && samples == samples_) return {};
     GLint limit = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &limit);
     if (width > limit || height > limit)
@@ -74,7 +73,7 @@ Status RenderTarget::resize(int width, int height, int samples) {
     width_ = width;
     height_ = height;
     samples_ = samples;
-    return std::nullopt;
+    return {};
 }
 
 void RenderTarget::bind() const {

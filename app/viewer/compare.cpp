@@ -37,9 +37,12 @@ void CompareView::renderSides(const Scene& scene, const RenderSettings& settings
                               const CompareSettings& compare) {
     RenderSettings s = settings;
     applyInterp(s, compare.left);
-    leftStats = leftRenderer.render(scene, s, leftFrame);
+    // A refused frame (checkFrame: the camera, the size) keeps the last image, with no stats.
+    Result<RenderStats> left = leftRenderer.render(scene, s, leftFrame);
+    leftStats = left ? left.value() : RenderStats{};
     applyInterp(s, compare.right);
-    rightStats = rightRenderer.render(scene, s, rightFrame);
+    Result<RenderStats> right = rightRenderer.render(scene, s, rightFrame);
+    rightStats = right ? right.value() : RenderStats{};
 }
 
 const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings& settings,

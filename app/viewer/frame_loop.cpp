@@ -122,8 +122,8 @@ int App::frame(Clock::time_point start, bool last) {
     if (screenshotRequested || keys.screenshot) takeScreenshot(*this);
     screenshotRequested = keys.screenshot = false;
     if (last && !options.windowShot.empty()) {
-        if (Status e = saveWindowShot(fbWidth, fbHeight, options.windowShot)) {
-            std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
+        if (Status e = saveWindowShot(fbWidth, fbHeight, options.windowShot); !e) {
+            std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
             status = 1;
         }
     }

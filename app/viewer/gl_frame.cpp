@@ -57,7 +57,7 @@ Status GlFrame::init() {
     scaled_.name = makeFrameTexture();
     copied_.name = makeFrameTexture();
     readFbo_ = gl::makeFramebuffer();
-    return std::nullopt;
+    return {};
 }
 
 void GlFrame::upload(const Framebuffer& frame, const Rect& view) {

@@ -155,7 +155,7 @@ Status applyOptions(const ViewerOptions& o, RenderSettings& settings) {
     settings.cullBackFaces = o.cull;
     settings.showNormals = o.normals;
     settings.view = *view;
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet::view

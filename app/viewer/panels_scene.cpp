@@ -98,9 +98,9 @@ bool writeShownScene(App& app) {
     std::error_code ec;
     const std::string full =
         std::filesystem::absolute(app.ui.saveScenePath, ec).lexically_normal().string();
-    if (Status error = app.model.saveScene(full, app.ui.saveWindowSize)) {
-        app.ui.lastSave = error->what();
-        showError(app, "Cannot save the scene", error->what());
+    if (Status error = app.model.saveScene(full, app.ui.saveWindowSize); !error) {
+        app.ui.lastSave = error.error().what();
+        showError(app, "Cannot save the scene", error.error().what());
         return false;
     }
     app.ui.saveScenePath = full;

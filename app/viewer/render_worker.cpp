@@ -76,7 +76,9 @@ void RenderWorker::loop() {
             r.diff = sides_.diff;
             r.compared = true;
         } else {
-            r.stats = renderer_.render(scene_, settings_, frame_);
+            // A refused frame (checkFrame) keeps the last image, with no stats.
+            Result<RenderStats> rendered = renderer_.render(scene_, settings_, frame_);
+            r.stats = rendered ? rendered.value() : RenderStats{};
             r.renderMs = ms(t0, Clock::now());
         }
         lock.lock();

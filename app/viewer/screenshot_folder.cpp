@@ -72,11 +72,11 @@ std::string screenshotFolder(const PicturesEnv& e) {
 
 Status ensureFolder(const std::string& folder) {
     std::error_code ec;
-    if (std::filesystem::is_directory(folder, ec)) return std::nullopt;
+    if (std::filesystem::is_directory(folder, ec)) return {};
     std::filesystem::create_directories(folder, ec);
     if (ec || !std::filesystem::is_directory(folder))
         return Error{{folder, 0}, "cannot create the screenshot folder (" + ec.message() + ")"};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet::view

@@ -77,7 +77,7 @@ Status writeTextFile(const std::string& path, const std::string& text) {
     f << text;
     f.close();
     if (!f) return Error{{path, 0}, "cannot write (is the folder there and writable?)"};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet::view

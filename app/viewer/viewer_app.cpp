@@ -169,20 +169,20 @@ void adoptScene(App& app, LoadedScene loaded) {
 }
 
 void openTexture(App& app, const std::string& path) {
-    if (Status error = app.model.loadTexture(path))
-        showError(app, "Cannot load the texture", error->what());
+    if (Status error = app.model.loadTexture(path); !error)
+        showError(app, "Cannot load the texture", error.error().what());
 }
 
 void takeScreenshot(App& app) {
     if (!app.shown) return;
-    if (Status error = ensureFolder(app.ui.screenshotFolder)) {
-        app.ui.lastScreenshot = error->what();
+    if (Status error = ensureFolder(app.ui.screenshotFolder); !error) {
+        app.ui.lastScreenshot = error.error().what();
         showNotice(app, app.ui.lastScreenshot);
         return;
     }
     const std::string framePath = nextFreePath(app.ui.screenshotFolder, "facet-frame");
-    if (Status error = saveFrameShot(*app.shown, framePath)) {
-        app.ui.lastScreenshot = error->what();
+    if (Status error = saveFrameShot(*app.shown, framePath); !error) {
+        app.ui.lastScreenshot = error.error().what();
         showNotice(app, app.ui.lastScreenshot);
         return;
     }
@@ -190,7 +190,8 @@ void takeScreenshot(App& app) {
     if (app.ui.screenshotWindowToo) {
         const std::string windowPath = nextFreePath(app.ui.screenshotFolder, "facet-window");
         const Status error = saveWindowShot(app.fbWidth, app.fbHeight, windowPath);
-        app.ui.lastScreenshot += error ? " (window: " + error->what() + ")" : ", " + windowPath;
+        app.ui.lastScreenshot +=
+            !error ? " (window: " + error.error().what() + ")" : ", " + windowPath;
     }
     showNotice(app, "Saved " + app.ui.lastScreenshot);
     std::printf("facet-view: saved %s\n", app.ui.lastScreenshot.c_str());
@@ -222,27 +223,27 @@ int App::run() {
     // files load here, so bad input still ends the run with exit code 2 and one line, and so
     // does everything in a run of a fixed number of frames (--frames: a script wants that file).
     std::error_code sizeError;
-    startupLoad = !error && options.frames <= 0 && path != defaultScenePath() &&
+    startupLoad = error && options.frames <= 0 && path != defaultScenePath() &&
                   options.texture.empty() && std::filesystem::is_regular_file(path, sizeError) &&
                   std::filesystem::file_size(path, sizeError) > kStartupLoadBytes &&
                   !defaultScenePath().empty();
     if (const std::optional<UpAxis> up = parseUpAxis(options.up))
         model.up = *up;
-    else if (!error)
+    else if (error)
         error = Error{{}, "--up " + options.up + ": expected x, y or z"};
-    if (!error) error = model.load(startupLoad ? defaultScenePath() : path);
+    if (error) error = model.load(startupLoad ? defaultScenePath() : path);
     // After the load: the default scene shown meanwhile is not one the user opened.
     model.recentFile = configFolder().empty() ? "" : configFolder() + "/recent.txt";
     model.recent = readRecent(model.recentFile, kMaxRecent);
     // A file named on the command line is one the user opened (the default scene is not).
-    if (!error && !startupLoad && path != defaultScenePath()) model.rememberFile(path);
+    if (error && !startupLoad && path != defaultScenePath()) model.rememberFile(path);
     if (startupLoad) loading.start(path, model.openOptions());
     // The same route as a texture chosen in the window (ViewerModel::loadTexture).
-    if (!error && !options.texture.empty()) error = model.loadTexture(options.texture);
-    if (!error) error = applyOptions(options, model.settings);
+    if (error && !options.texture.empty()) error = model.loadTexture(options.texture);
+    if (error) error = applyOptions(options, model.settings);
     model.markSaved();  // the command line's choices are where the user starts
-    if (error) {        // bad input is reported the same with or without a display
-        std::fprintf(stderr, "facet-view: %s\n", error->what().c_str());
+    if (!error) {       // bad input is reported the same with or without a display
+        std::fprintf(stderr, "facet-view: %s\n", error.error().what().c_str());
         return 2;
     }
     ui.scenePath = path;
@@ -318,8 +319,8 @@ int App::run() {
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     gl = std::make_unique<GlFrame>();
-    if (Status e = gl->init()) {  // names the shader file, with the GLSL log
-        std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
+    if (Status e = gl->init(); !e) {  // names the shader file, with the GLSL log
+        std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
         status = 1;
     }
 
@@ -362,8 +363,8 @@ int App::run() {
     accuracy.wait();
 
     if (status == 0 && !options.screenshot.empty() && shown) {
-        if (Status e = saveFrameShot(*shown, options.screenshot)) {
-            std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
+        if (Status e = saveFrameShot(*shown, options.screenshot); !e) {
+            std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
             status = 1;
         }
     }
@@ -371,8 +372,8 @@ int App::run() {
         const std::string text = stateText(model, frameCount) + rendererLogText(rendererLog) +
                                  accuracyStateText(accuracy.report().get()) +
                                  workspaceStateText(*this) + inspectorStateText(*this);
-        if (Status e = writeTextFile(options.statePath, text)) {
-            std::fprintf(stderr, "facet-view: %s\n", e->what().c_str());
+        if (Status e = writeTextFile(options.statePath, text); !e) {
+            std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
             status = 1;
         }
     }

@@ -16,7 +16,7 @@ Status ViewerModel::load(const std::string& path) {
     Result<LoadedScene> loaded = loadSceneOrMesh(path, openOptions());
     if (!loaded) return loaded.error();
     adopt(std::move(loaded).value());
-    return std::nullopt;
+    return {};
 }
 
 void ViewerModel::adopt(LoadedScene loaded) {
@@ -40,10 +40,10 @@ Camera ViewerModel::userCamera() const {
 Status ViewerModel::saveScene(const std::string& path, bool windowSize) {
     Scene out = scene;  // shares the mesh and texture
     if (!windowSize) out.camera = userCamera();
-    if (Status error = writeScene(out, path)) return error;
+    if (Status error = writeScene(out, path); !error) return error;
     rememberFile(path);
     markSaved();
-    return std::nullopt;
+    return {};
 }
 
 DocumentState ViewerModel::documentState() const {
@@ -77,9 +77,9 @@ void ViewerModel::rememberFile(const std::string& path) {
 }
 
 Status ViewerModel::loadTexture(const std::string& path) {
-    if (Status error = loadSceneTexture(scene, path)) return error;
+    if (Status error = loadSceneTexture(scene, path); !error) return error;
     applyOpeningSettings(scene, settings);
-    return std::nullopt;
+    return {};
 }
 
 OpenOptions ViewerModel::openOptions() const {
@@ -117,7 +117,7 @@ void ViewerModel::setUpAxis(UpAxis axis) {
 std::optional<UpAxis> ViewerModel::orbitAxis() const {
     for (const UpAxis a : {UpAxis::X, UpAxis::Y, UpAxis::Z})
         if (std::abs(glm::dot(orbit.vertical, upVector(a))) > 0.9999) return a;
-    return std::nullopt;
+    return {};
 }
 
 void ViewerModel::resetCamera() {
@@ -152,7 +152,9 @@ const Camera& ViewerModel::prepareFrame(int windowWidth, int windowHeight) {
 }
 
 const Framebuffer& ViewerModel::render() {
-    stats = renderer.render(scene, settings, frame);
+    // A refused frame (checkFrame: the camera, the size) keeps the last image, with no stats.
+    Result<RenderStats> rendered = renderer.render(scene, settings, frame);
+    stats = rendered ? rendered.value() : RenderStats{};
     return frame;
 }
 

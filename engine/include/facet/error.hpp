@@ -74,7 +74,28 @@ class Result {
     std::variant<T, Error> v_;
 };
 
-/// Outcome of an operation with no product: empty on success.
-using Status = std::optional<Error>;
+/// Outcome of an operation with no product: success (the default) or an Error. Its truth value
+/// means success, as Result's does: `if (Status s = f(); !s) report(s.error());`.
+class Status {
+  public:
+    /// Success.
+    Status() = default;
+    /// Failure with `error`.
+    Status(Error error) : error_(std::move(error)) {}
+
+    /// True on success.
+    bool ok() const { return !error_.has_value(); }
+    /// True on success.
+    explicit operator bool() const { return ok(); }
+
+    /// The error; calling it on success is a programmer error.
+    const Error& error() const {
+        assert(!ok());
+        return *error_;
+    }
+
+  private:
+    std::optional<Error> error_;
+};
 
 }  // namespace facet

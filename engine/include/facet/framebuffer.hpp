@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "facet/error.hpp"
+
 namespace facet {
 
 /// Packs 8-bit channels into the in-memory RGBA byte order (R first).
@@ -29,8 +31,9 @@ struct Framebuffer {
     std::vector<std::uint32_t> color;  ///< row-major, row 0 at the top, bytes R,G,B,A
     std::vector<float> depth;          ///< row-major camera-space depth
 
-    /// Reallocates only when the size changes (no allocation per frame at a fixed size).
-    void resize(int w, int h);
+    /// Reallocates only when the size changes (no allocation per frame at a fixed size). An
+    /// error, the frame unchanged, for a negative size or buffers beyond kMaxFrameBytes.
+    Status resize(int w, int h);
     /// Fills colour with the background and depth with +inf.
     void clear(std::uint32_t rgbaBackground);
     /// Index of pixel (x, y).

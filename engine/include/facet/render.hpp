@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/lighting.hpp"
 #include "facet/scene.hpp"
@@ -67,6 +68,12 @@ struct RenderStats {
 /// diagonal (spec §4, "a small fraction of the scene's size").
 double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh);
 
+/// Why a frame from `camera` cannot be rendered with `settings`: the camera is invalid
+/// (checkCamera: non-finite, eye == look, y hint parallel, focal ≤ 0), its size is outside
+/// 1…kMaxImageSide, or its buffers (with supersampling and MSAA) exceed kMaxFrameBytes
+/// (limits.hpp). Success otherwise. Renderer::render checks with it before allocating anything.
+Status checkFrame(const Camera& camera, const RenderSettings& settings);
+
 /// Renders frames; keeps scratch buffers so a steady frame size allocates nothing per frame.
 class Renderer {
   public:
@@ -76,23 +83,29 @@ class Renderer {
     Renderer& operator=(Renderer&&) noexcept;
 
     /// Clears `frame` (resized to the camera's image) and renders the scene into it; with a
-    /// debug view (settings.view), the view's heat map and legend (debug_view.hpp).
-    RenderStats render(const Scene& scene, const RenderSettings& settings, Framebuffer& frame);
+    /// debug view (settings.view), the view's heat map and legend (debug_view.hpp). An error
+    /// (checkFrame's) and `frame` untouched when the camera or the frame's size is refused.
+    Result<RenderStats> render(const Scene& scene, const RenderSettings& settings,
+                               Framebuffer& frame);
 
     /// Renders the frame settings.view looks at (the settings of debugViewBase: solid, one
     /// sample) into `frame` and measures the view into `map` with an instrumented draw of it.
-    RenderStats renderDebugView(const Scene& scene, const RenderSettings& settings,
-                                Framebuffer& frame, DebugMap& map);
+    /// Refuses what render() refuses.
+    Result<RenderStats> renderDebugView(const Scene& scene, const RenderSettings& settings,
+                                        Framebuffer& frame, DebugMap& map);
 
     /// Draws clip-space geometry into `frame` without clearing it. With the Depth shader the
-    /// depth-to-colour pass runs over the whole frame afterwards.
-    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
+    /// depth-to-colour pass runs over the whole frame afterwards. An error when the frame's size
+    /// is outside the limits or its planes are not that size.
+    Result<RenderStats> draw(const DrawInput& input, const RenderSettings& settings,
+                             Framebuffer& frame);
 
     /// Counts, per pixel, how many triangles cover its centre (fill-rule tests, overdraw views);
     /// with settings.msaa > 1, per sample, in the per-sample buffer's layout (samples()).
     /// `counts` is resized to width*height*samples and zeroed first. Honours culling and clipping.
-    void countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
-                       int height, std::vector<std::uint16_t>& counts);
+    /// An error, `counts` untouched, when the size is outside the limits.
+    Status countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
+                         int height, std::vector<std::uint16_t>& counts);
 
     /// The per-sample buffer of the last multisampled draw, before the resolve: sample k of
     /// pixel (x, y) at (x·b.x + k mod b.x, y·b.y + k div b.x), b = sampleBlock(msaa)

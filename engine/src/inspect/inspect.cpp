@@ -255,6 +255,10 @@ PixelHistory inspectPixel(const Scene& scene, const RenderSettings& settings, in
         h.notes.emplace_back("the pixel is outside the image");
         return h;
     }
+    if (Status st = checkFrame(camera, settings); !st) {
+        h.notes.push_back("nothing is drawn: " + st.error().what());
+        return h;
+    }
     if (settings.mode != DrawMode::Solid) {
         h.notes.emplace_back("only Solid mode is inspected: lines and points are not listed");
         return h;
@@ -323,9 +327,11 @@ PixelHistory inspectPixel(const Scene& scene, const RenderSettings& settings, in
         s.depthLegend = false;
         Renderer renderer;
         Framebuffer frame;
-        const RenderStats stats = renderer.render(scene, s, frame);
-        h.depthNear = stats.depthNear;
-        h.depthFar = stats.depthFar;
+        // A camera render() refuses has drawn nothing above either: the range stays empty.
+        if (const Result<RenderStats> stats = renderer.render(scene, s, frame)) {
+            h.depthNear = stats.value().depthNear;
+            h.depthFar = stats.value().depthFar;
+        }
         for (SamplePixel& s2 : samples)
             if (s2.fb.depth[0] != kEmptyDepth)
                 s2.fb.color[0] = depthColor(s2.fb.depth[0], h.depthNear, h.depthFar);

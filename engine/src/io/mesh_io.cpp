@@ -11,6 +11,8 @@
 
 #include "facet/mesh_io.hpp"
 
+#include "facet/limits.hpp"
+
 namespace facet {
 
 namespace {
@@ -51,6 +53,17 @@ Status writeOff(const Mesh& mesh, const std::string& path) {
         (mesh.hasUvs() && mesh.uvs.size() != nv) || mesh.indices.size() % 3 != 0) {
         return Error{{path, 0}, "cannot write an inconsistent mesh (attribute or index counts)"};
     }
+    // What the loaders would refuse is not written (limits.hpp): a mesh over the memory limit,
+    // or a file over the size limit, checked as the text grows, before the file is opened.
+    if (auto problem = meshMemoryProblem(nv, mesh.triangleCount()))
+        return Error{{path, 0}, *problem};
+    const auto tooLarge = [&] {
+        return Error{{path, 0},
+                     "the OFF file would exceed " + std::to_string(kMaxFileBytes >> 30) +
+                         " GiB, the largest file facet reads (" + std::to_string(nv) +
+                         " vertices, " + std::to_string(mesh.triangleCount()) +
+                         " triangles); choose less detail"};
+    };
 
     std::string out = "OFF\n";
     appendUint(out, nv);
@@ -73,6 +86,7 @@ Status writeOff(const Mesh& mesh, const std::string& path) {
             out.pop_back();
         }
         out += '\n';
+        if (out.size() > kMaxFileBytes) return tooLarge();
     }
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         out += '3';
@@ -81,6 +95,7 @@ Status writeOff(const Mesh& mesh, const std::string& path) {
             appendUint(out, mesh.indices[3 * t + static_cast<std::size_t>(k)]);
         }
         out += '\n';
+        if (out.size() > kMaxFileBytes) return tooLarge();
     }
 
     std::FILE* file = std::fopen(path.c_str(), "wb");
@@ -88,7 +103,7 @@ Status writeOff(const Mesh& mesh, const std::string& path) {
     const bool written = std::fwrite(out.data(), 1, out.size(), file) == out.size();
     const bool closed = std::fclose(file) == 0;
     if (!written || !closed) return Error{{path, 0}, "cannot write file (disk full?)"};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet

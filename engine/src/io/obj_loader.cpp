@@ -107,7 +107,7 @@ class MtlReader : public tinyobj::MaterialReader {
         }
         auto text = text::readFile(path);
         if (!text) {
-            if (!problem_) problem_ = text.error();
+            if (problem_) problem_ = text.error();
             return false;
         }
         std::istringstream stream(std::move(*text));
@@ -352,7 +352,7 @@ Result<Mesh> loadObj(const std::string& path, const LoadControl* control) {
                                              &mtl, /*triangulate=*/false,
                                              /*default_vcols_fallback=*/false);
         if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);
-        if (mtl.problem()) return *mtl.problem();
+        if (!mtl.problem()) return mtl.problem().error();
         if (!parsed) {
             return Error{{path, lines->originalLine(lineInMessage(err))},
                          "cannot parse OBJ: " + firstLine(err)};

@@ -218,6 +218,9 @@ Result<Scene> openSceneFile(const std::string& path, const OpenOptions& options,
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return Error{{path, 0}, "is a folder, not a file"};
     if (!std::filesystem::exists(path, ec)) return Error{{path, 0}, "file not found"};
+    // Before anything reads it: a pipe would block the read, a device would never end.
+    if (!std::filesystem::is_regular_file(path, ec))
+        return Error{{path, 0}, "is not a regular file (a pipe, device or socket)"};
     const std::string head = readHead(path);
     std::string_view first;
     FileKind kind = kindFromContent(head, first);
@@ -235,11 +238,12 @@ Result<Scene> openSceneFile(const std::string& path, const OpenOptions& options,
             Scene scene = sceneForMesh(std::move(*mesh), path, width, height, options.up);
             const LoadControl textureControl = meter.sub(meshShare, 1.0f);
             if (!mapKd.empty()) {
-                if (Status st =
-                        loadSceneTexture(scene, mapKd, control ? &textureControl : nullptr)) {
-                    if (st->cancelled) return *st;
-                    return Error{{path, 0},
-                                 "cannot load the map_Kd texture of its material: " + st->what()};
+                if (Status st = loadSceneTexture(scene, mapKd, control ? &textureControl : nullptr);
+                    !st) {
+                    if (st.error().cancelled) return st.error();
+                    return Error{
+                        {path, 0},
+                        "cannot load the map_Kd texture of its material: " + st.error().what()};
                 }
             }
             if (meter.cancelled()) return io::ProgressMeter::cancelledError(path);

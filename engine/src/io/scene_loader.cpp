@@ -329,7 +329,7 @@ Status loadSceneTexture(Scene& scene, const std::string& path, const LoadControl
     if (!texture) return texture.error();
     scene.texture = std::make_shared<const Texture>(std::move(*texture));
     scene.texturePath = path;
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet

@@ -108,7 +108,7 @@ Status writeScene(const Scene& scene, const std::string& sceneFile) {
     const bool written = std::fwrite(text->data(), 1, text->size(), file) == text->size();
     const bool closed = std::fclose(file) == 0;
     if (!written || !closed) return Error{{sceneFile, 0}, "cannot write file (disk full?)"};
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace facet

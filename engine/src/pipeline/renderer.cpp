@@ -57,10 +57,12 @@ struct Renderer::Impl {
     }
 
     /// One frame at the camera's size; `input`, when given, receives the draw's input (valid
-    /// until the next frame).
-    RenderStats renderView(Renderer& renderer, const Scene& scene, const Camera& camera,
-                           const RenderSettings& settings, Framebuffer& frame,
-                           DrawInput* input = nullptr);
+    /// until the next frame). The camera and size are already checked (checkFrame).
+    RenderStats renderView(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                           Framebuffer& frame, DrawInput* input = nullptr);
+
+    /// Renderer::draw on a frame already checked.
+    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
@@ -143,10 +145,50 @@ int clampedSubPixelBits(const RenderSettings& settings) {
     return std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
 }
 
+/// An image of width × height (1…kMaxImageSide each) whose buffers at `supersample` and `msaa`
+/// fit in kMaxFrameBytes.
+Status checkImageSize(int width, int height, int supersample, int msaa) {
+    if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide)
+        return Error{{},
+                     "image size must be 1.." + std::to_string(kMaxImageSide) +
+                         " pixels in each direction, got " + std::to_string(width) + "x" +
+                         std::to_string(height)};
+    if (auto problem = frameMemoryProblem(width, height, supersample, msaa))
+        return Error{{}, *problem};
+    return {};
+}
+
+/// A frame draw() may draw into: a size checkImageSize accepts, and both planes that size.
+Status checkFramebuffer(const Framebuffer& frame, const RenderSettings& settings) {
+    if (Status st = checkImageSize(frame.width, frame.height, 1, settings.msaa); !st) return st;
+    const std::size_t pixels =
+        static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height);
+    if (frame.color.size() != pixels || frame.depth.size() != pixels)
+        return Error{{},
+                     "the frame's colour and depth planes are not " + std::to_string(frame.width) +
+                         "x" + std::to_string(frame.height) +
+                         " pixels (size it with Framebuffer::resize)"};
+    return {};
+}
+
 }  // namespace
 
-RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& settings,
-                           Framebuffer& frame) {
+Status checkFrame(const Camera& camera, const RenderSettings& settings) {
+    if (std::string problem = checkCamera(camera); !problem.empty()) {
+        // The size has its own message with the numbers; the rest are the camera's.
+        if (camera.width < 1 || camera.width > kMaxImageSide || camera.height < 1 ||
+            camera.height > kMaxImageSide)
+            return checkImageSize(camera.width, camera.height, 1, 1);
+        return Error{{}, "camera: " + problem};
+    }
+    const int supersample =
+        settings.mode == DrawMode::Solid ? std::clamp(settings.supersample, 1, kMaxSupersample) : 1;
+    const int msaa = settings.mode == DrawMode::Solid ? settings.msaa : 1;
+    return checkImageSize(camera.width, camera.height, supersample, msaa);
+}
+
+RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& settings,
+                                 Framebuffer& frame) {
     RenderStats stats;
     if (frame.width <= 0 || frame.height <= 0) return stats;
     const VariantKey key = variantKey(settings, input);
@@ -160,28 +202,27 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
     const RasterizeFn blocks = blockLoop(key);
     // Multisampling draws triangles into the per-sample buffer, which starts as the frame's
     // pixels and is resolved back into it; lines and points stay one sample (spec §11).
-    const int samples = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
-    const SampleBlock block = sampleBlock(samples);
-    Framebuffer& target = samples > 1 ? impl_->samples : frame;
-    if (samples > 1) {  // Solid mode: triangles only
-        expandToSamples(frame, block.x, block.y, impl_->samples, threads);
-        drawMsaaTriangles(impl_->tiles, key, input, settings, constants, impl_->samples, samples,
-                          frame.width, frame.height, subdivision, threads,
-                          clampedSubPixelBits(settings), stats);
+    const int sampleCount = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
+    const SampleBlock block = sampleBlock(sampleCount);
+    Framebuffer& target = sampleCount > 1 ? samples : frame;
+    if (sampleCount > 1) {  // Solid mode: triangles only
+        expandToSamples(frame, block.x, block.y, samples, threads);
+        drawMsaaTriangles(tiles, key, input, settings, constants, samples, sampleCount, frame.width,
+                          frame.height, subdivision, threads, clampedSubPixelBits(settings), stats);
     } else {
         dispatch(key, [&](auto variant) {
             using V = decltype(variant);
             switch (settings.mode) {
                 case DrawMode::Solid: {
                     RasterContext ctx{&frame, &constants, subdivision, spans, blocks};
-                    impl_->tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width,
-                                      frame.height, &rasterizeTriangle<V>, &ctx, threads,
-                                      clampedSubPixelBits(settings), stats);
+                    tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width, frame.height,
+                               &rasterizeTriangle<V>, &ctx, threads, clampedSubPixelBits(settings),
+                               stats);
                     break;
                 }
                 case DrawMode::Wireframe:
-                    impl_->updateEdges(input.indices);
-                    drawLines<V>(input, impl_->edges, frame, constants, stats);
+                    updateEdges(input.indices);
+                    drawLines<V>(input, edges, frame, constants, stats);
                     break;
                 case DrawMode::Vertices:
                     drawPoints<V>(input, settings.pointSize, frame, constants, stats);
@@ -190,53 +231,62 @@ RenderStats Renderer::draw(const DrawInput& input, const RenderSettings& setting
         });
     }
     if (settings.shader == ShaderKind::Depth) resolveDepthColors(target, stats, threads);
-    if (samples > 1) resolveSupersampled(impl_->samples, block.x, block.y, frame, threads);
+    if (sampleCount > 1) resolveSupersampled(samples, block.x, block.y, frame, threads);
     return stats;
+}
+
+Result<RenderStats> Renderer::draw(const DrawInput& input, const RenderSettings& settings,
+                                   Framebuffer& frame) {
+    if (Status st = checkFramebuffer(frame, settings); !st) return st.error();
+    return impl_->draw(input, settings, frame);
 }
 
 const Framebuffer& Renderer::samples() const {
     return impl_->samples;
 }
 
-void Renderer::countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
-                             int height, std::vector<std::uint16_t>& counts) {
+Status Renderer::countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
+                               int height, std::vector<std::uint16_t>& counts) {
+    if (Status st = checkImageSize(width, height, 1, settings.msaa); !st) return st;
     const int samples = msaaSamples(settings.msaa);
     counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
                       static_cast<std::size_t>(samples),
                   0);
-    if (width <= 0 || height <= 0) return;
     RenderStats stats;
     if (samples > 1) {
         SampleCounts ctx{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)};
         impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height,
                           &countSamples, &ctx, resolveThreads(settings.threads),
                           clampedSubPixelBits(settings), stats, SamplePattern::kReach);
-        return;
+        return {};
     }
     CoverageCounts ctx{counts.data(), width};
     impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
                       &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
+    return {};
 }
 
-RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
-                             Framebuffer& frame) {
+Result<RenderStats> Renderer::render(const Scene& scene, const RenderSettings& settings,
+                                     Framebuffer& frame) {
     if (settings.view != DebugView::None) {
         DebugMap map;
-        RenderStats stats = renderDebugView(scene, settings, frame, map);
+        Result<RenderStats> stats = renderDebugView(scene, settings, frame, map);
+        if (!stats) return stats;
         Clock::time_point t = Clock::now();
         paintDebugView(map, frame);
-        stats.postMs += msSince(t);
+        stats.value().postMs += msSince(t);
         return stats;
     }
+    if (Status st = checkFrame(scene.camera, settings); !st) return st.error();
     const int n = std::clamp(settings.supersample, 1, kMaxSupersample);
     if (n == 1 || settings.mode != DrawMode::Solid)
-        return impl_->renderView(*this, scene, scene.camera, settings, frame);
+        return impl_->renderView(scene, scene.camera, settings, frame);
     // The legend is drawn on the final frame, at its size, so it stays legible.
     RenderSettings big = settings;
     big.depthLegend = false;
     const Camera& cam = scene.camera;
-    RenderStats stats = impl_->renderView(
-        *this, scene, resizedCamera(cam, cam.width * n, cam.height * n), big, impl_->supersampled);
+    RenderStats stats = impl_->renderView(scene, resizedCamera(cam, cam.width * n, cam.height * n),
+                                          big, impl_->supersampled);
     Clock::time_point t = Clock::now();
     resolveSupersampled(impl_->supersampled, n, n, frame, resolveThreads(settings.threads));
     if (settings.shader == ShaderKind::Depth && settings.depthLegend && stats.depthFar > 0.0f)
@@ -245,11 +295,12 @@ RenderStats Renderer::render(const Scene& scene, const RenderSettings& settings,
     return stats;
 }
 
-RenderStats Renderer::renderDebugView(const Scene& scene, const RenderSettings& settings,
-                                      Framebuffer& frame, DebugMap& map) {
+Result<RenderStats> Renderer::renderDebugView(const Scene& scene, const RenderSettings& settings,
+                                              Framebuffer& frame, DebugMap& map) {
     const RenderSettings base = debugViewBase(settings);
+    if (Status st = checkFrame(scene.camera, base); !st) return st.error();
     DrawInput input;
-    RenderStats stats = impl_->renderView(*this, scene, scene.camera, base, frame, &input);
+    RenderStats stats = impl_->renderView(scene, scene.camera, base, frame, &input);
     Clock::time_point t = Clock::now();
     switch (settings.view) {
         case DebugView::BinLoad:
@@ -262,8 +313,8 @@ RenderStats Renderer::renderDebugView(const Scene& scene, const RenderSettings& 
             RenderSettings perspective = base;
             perspective.interp = Interp::Perspective;
             if (base.interp != Interp::Perspective)
-                stats = impl_->renderView(*this, scene, scene.camera, perspective, frame);
-            impl_->renderView(*this, scene, scene.camera, affine, impl_->affine);
+                stats = impl_->renderView(scene, scene.camera, perspective, frame);
+            impl_->renderView(scene, scene.camera, affine, impl_->affine);
             fillInterpError(frame, impl_->affine, map);
             break;
         }
@@ -283,12 +334,12 @@ RenderStats Renderer::renderDebugView(const Scene& scene, const RenderSettings& 
     return stats;
 }
 
-RenderStats Renderer::Impl::renderView(Renderer& renderer, const Scene& scene, const Camera& cam,
+RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
                                        const RenderSettings& settings, Framebuffer& frame,
                                        DrawInput* inputOut) {
     // Clear.
     Clock::time_point t = Clock::now();
-    frame.resize(cam.width, cam.height);
+    (void)frame.resize(cam.width, cam.height);  // within the limits: checked by checkFrame
     const int threads = resolveThreads(settings.threads);
     clearFrame(frame, rgbaFromHex(settings.background), threads);
     const double clearMs = msSince(t);
@@ -303,7 +354,7 @@ RenderStats Renderer::Impl::renderView(Renderer& renderer, const Scene& scene, c
     if (inputOut) *inputOut = input;
 
     // The draw, then the passes after it.
-    RenderStats stats = renderer.draw(input, settings, frame);
+    RenderStats stats = draw(input, settings, frame);
     stats.clearMs = clearMs;
     stats.vertexMs = vertexMs;
     stats.rasterMs = msSince(t);

@@ -1,8 +1,9 @@
 #include "facet/framebuffer.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cstdio>
+
+#include "facet/limits.hpp"
 
 namespace facet {
 
@@ -13,14 +14,18 @@ std::string hexFromRgba(std::uint32_t rgba) {
     return buf;
 }
 
-void Framebuffer::resize(int w, int h) {
-    assert(w >= 0 && h >= 0);
+Status Framebuffer::resize(int w, int h) {
+    if (w < 0 || h < 0)
+        return Error{
+            {}, "a frame cannot be " + std::to_string(w) + "x" + std::to_string(h) + " pixels"};
+    if (auto problem = frameMemoryProblem(w, h, 1)) return Error{{}, *problem};
     width = w;
     height = h;
     const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
     // resize() keeps capacity, so a steady size never reallocates.
     color.resize(n);
     depth.resize(n);
+    return {};
 }
 
 void Framebuffer::clear(std::uint32_t rgbaBackground) {

@@ -1,0 +1,179 @@
+// The API tells instead of throwing (README, "Errors"): Renderer::render, renderDebugView, draw,
+// countCoverage and Framebuffer::resize return an error value for a camera or a size the engine
+// refuses, with the message the CLI prints, and leave the frame as it was; nothing throws.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "facet/debug_view.hpp"
+#include "facet/error.hpp"
+#include "facet/limits.hpp"
+#include "facet/render.hpp"
+
+using namespace facet;
+
+namespace {
+
+// One triangle in front of the default camera, so a frame that is drawn draws something.
+Scene triangleScene() {
+    Scene scene;
+    auto mesh = std::make_shared<Mesh>();
+    mesh->positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    mesh->indices = {0, 1, 2};
+    scene.mesh = std::move(mesh);
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    return scene;
+}
+
+// Renders `scene` into a frame holding one 2x2 image first, and returns the error; the frame
+// must be untouched.
+std::string renderError(const Scene& scene, const RenderSettings& settings = {}) {
+    Renderer renderer;
+    Framebuffer frame;
+    EXPECT_TRUE(frame.resize(2, 2));
+    frame.clear(0x12345678u);
+    const Result<RenderStats> result = renderer.render(scene, settings, frame);
+    EXPECT_FALSE(result) << "rendered " << scene.camera.width << "x" << scene.camera.height;
+    EXPECT_EQ(frame.width, 2);
+    EXPECT_EQ(frame.height, 2);
+    EXPECT_EQ(frame.color[0], 0x12345678u);
+    return result ? std::string() : result.error().what();
+}
+
+bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(RenderErrors, NegativeWidthIsAnErrorNotAnException) {
+    Scene scene = triangleScene();
+    scene.camera.width = -10;
+    const std::string e = renderError(scene);
+    EXPECT_TRUE(has(e, "image size must be 1..16384")) << e;
+    EXPECT_TRUE(has(e, "-10x48")) << e;
+}
+
+TEST(RenderErrors, ZeroSizeIsAnErrorNotAnEmptyFrame) {
+    Scene scene = triangleScene();
+    scene.camera.height = 0;
+    const std::string e = renderError(scene);
+    EXPECT_TRUE(has(e, "64x0")) << e;
+}
+
+TEST(RenderErrors, OverTheSideLimitIsAnError) {
+    Scene scene = triangleScene();
+    scene.camera.width = kMaxImageSide + 1;
+    EXPECT_TRUE(has(renderError(scene), "16385x48"));
+}
+
+TEST(RenderErrors, FrameMemoryOverTheLimitIsTheCliMessage) {
+    // 16384² at 4x4 supersampling: 34 GiB of buffers, refused before any is allocated.
+    Scene scene = triangleScene();
+    scene.camera.width = kMaxImageSide;
+    scene.camera.height = kMaxImageSide;
+    RenderSettings settings;
+    settings.supersample = 4;
+    const std::string e = renderError(scene, settings);
+    EXPECT_EQ(e, *frameMemoryProblem(kMaxImageSide, kMaxImageSide, 4));
+    EXPECT_TRUE(has(e, "16384x16384 frame at 4x4 supersampling needs")) << e;
+    // MSAA counts too.
+    settings.supersample = 1;
+    settings.msaa = 8;
+    EXPECT_TRUE(has(renderError(scene, settings), "MSAA 8x"));
+}
+
+TEST(RenderErrors, NonFiniteOrDegenerateCamerasAreErrors) {
+    Scene scene = triangleScene();
+    scene.camera.eye.x = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_TRUE(has(renderError(scene), "camera: camera vectors must be finite"));
+    scene = triangleScene();
+    scene.camera.look = scene.camera.eye;
+    EXPECT_TRUE(has(renderError(scene), "look-at point equals the camera position"));
+    scene = triangleScene();
+    scene.camera.up = glm::normalize(scene.camera.look - scene.camera.eye);
+    EXPECT_TRUE(has(renderError(scene), "parallel"));
+    scene = triangleScene();
+    scene.camera.focal = std::numeric_limits<double>::infinity();
+    EXPECT_TRUE(has(renderError(scene), "focal length"));
+}
+
+TEST(RenderErrors, DebugViewsRefuseTheSame) {
+    Scene scene = triangleScene();
+    scene.camera.width = -10;
+    RenderSettings settings;
+    settings.view = DebugView::Overdraw;
+    EXPECT_TRUE(has(renderError(scene, settings), "-10x48"));
+    Renderer renderer;
+    Framebuffer frame;
+    DebugMap map;
+    EXPECT_FALSE(renderer.renderDebugView(scene, settings, frame, map));
+}
+
+TEST(RenderErrors, AValidFrameStillRenders) {
+    const Scene scene = triangleScene();
+    Renderer renderer;
+    Framebuffer frame;
+    const Result<RenderStats> result = renderer.render(scene, {}, frame);
+    ASSERT_TRUE(result) << result.error().what();
+    EXPECT_EQ(frame.width, 64);
+    EXPECT_EQ(result.value().trianglesRasterized, 1u);
+}
+
+TEST(RenderErrors, DrawAndCountCoverageCheckTheirSizes) {
+    Renderer renderer;
+    const std::vector<glm::vec4> clip = {{0, 0, 1, 1}, {8, 0, 1, 1}, {0, 8, 1, 1}};
+    const std::vector<std::uint32_t> indices = {0, 1, 2};
+    const DrawInput input{.clip = clip, .indices = indices};
+    Framebuffer empty;
+    const Result<RenderStats> none = renderer.draw(input, {}, empty);
+    ASSERT_FALSE(none);
+    EXPECT_TRUE(has(none.error().what(), "0x0")) << none.error().what();
+    // A frame whose planes do not match its size is refused, not overrun.
+    Framebuffer lying;
+    lying.width = 16;
+    lying.height = 16;
+    const Result<RenderStats> wrong = renderer.draw(input, {}, lying);
+    ASSERT_FALSE(wrong);
+    EXPECT_TRUE(has(wrong.error().what(), "Framebuffer::resize")) << wrong.error().what();
+    Framebuffer frame;
+    ASSERT_TRUE(frame.resize(16, 16));
+    frame.clear(0);
+    EXPECT_TRUE(renderer.draw(input, {}, frame));
+
+    std::vector<std::uint16_t> counts(3, 7);
+    const Status refused = renderer.countCoverage(input, {}, -10, 4, counts);
+    ASSERT_FALSE(refused);
+    EXPECT_TRUE(has(refused.error().what(), "-10x4"));
+    EXPECT_EQ(counts.size(), 3u);  // untouched
+    EXPECT_TRUE(renderer.countCoverage(input, {}, 16, 16, counts));
+    EXPECT_EQ(counts.size(), 256u);
+}
+
+TEST(RenderErrors, FramebufferResizeRefusesWhatItCannotHold) {
+    Framebuffer frame;
+    const Status negative = frame.resize(-10, 4);
+    ASSERT_FALSE(negative);
+    EXPECT_TRUE(has(negative.error().what(), "-10x4"));
+    const Status huge = frame.resize(1 << 20, 1 << 20);
+    ASSERT_FALSE(huge);
+    EXPECT_TRUE(has(huge.error().what(), "limit")) << huge.error().what();
+    EXPECT_EQ(frame.width, 0);
+    EXPECT_TRUE(frame.resize(3, 2));
+    EXPECT_EQ(frame.color.size(), 6u);
+}
+
+TEST(RenderErrors, StatusTruthMeansSuccess) {
+    const Status ok;
+    EXPECT_TRUE(ok);
+    EXPECT_TRUE(ok.ok());
+    const Status failed = Error{{"f.scene", 3}, "bad"};
+    EXPECT_FALSE(failed);
+    EXPECT_EQ(failed.error().what(), "f.scene:3: bad");
+}
