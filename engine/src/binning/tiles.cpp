@@ -17,7 +17,7 @@ namespace facet::detail {
 namespace {
 
 /// Triangles each thread's front end takes per batch. One thread: few enough that the batch's
-/// records (64 to 240 bytes each) and bins are still in the core's L2 when its tiles read them
+/// records (80 to 264 bytes each) and bins are still in the core's L2 when its tiles read them
 /// (with 8192 the tile loop waited on memory for every record). Several threads: every batch
 /// costs two barriers, and on a loaded machine a barrier waits for a descheduled thread's next
 /// time slice; the bunny at 2 threads took twice as long with 2048 as with 8192 (load 17 on 2
