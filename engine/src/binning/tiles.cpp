@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include <omp.h>
 
@@ -16,7 +17,7 @@ namespace facet::detail {
 namespace {
 
 /// Triangles each thread's front end takes per batch. One thread: few enough that the batch's
-/// records (64 to 240 bytes each) and bins are still in the core's L2 when its tiles read them
+/// records (80 to 264 bytes each) and bins are still in the core's L2 when its tiles read them
 /// (with 8192 the tile loop waited on memory for every record). Several threads: every batch
 /// costs two barriers, and on a loaded machine a barrier waits for a descheduled thread's next
 /// time slice; the bunny at 2 threads took twice as long with 2048 as with 8192 (load 17 on 2
@@ -24,35 +25,51 @@ namespace {
 constexpr std::size_t kBatchPerThread = 2048;
 constexpr std::size_t kBatchPerThreadShared = 8192;
 
-/// A record's head: the snapped triangle (SnappedTriangle in 32 bits: the guard band keeps its
-/// coordinates, relative to its box, far below 2^31) and the planes' base and depth plane. A
-/// draw without varyings needs nothing more (the weights of vertices 1 and 2 only interpolate
-/// varyings), so its record is these 60 bytes in one 64-byte line; with varyings the weights'
-/// planes (l1, l2, u1, u2) and a0, d1 and d2 of the layout's varyings follow.
+/// A record's head: the triangle's edges as the tile side reads them (the edge values at the
+/// box's first pixel centre in 64 bits; the steps from two edges' vertex differences, in 32 bits
+/// since the guard band bounds them, the third edge's being minus their sum) and the planes'
+/// base and depth plane. Keeping the edges, not the snapped vertices, spares every tile the
+/// triangle touches their rebuild (edgesOf, ~90 instructions: on the 1M-triangle sphere that
+/// cost more than the smaller record saved). A draw without varyings needs nothing more (the
+/// weights of vertices 1 and 2 only interpolate varyings); with varyings the weights' planes
+/// (l1, l2, u1, u2) and a0, d1 and d2 of the layout's varyings follow.
 struct RecordHead {
+    std::int64_t e0[3];
     PixelRect box;
-    std::int32_t x[3], y[3];
+    std::int32_t dx[2], dy[2];
     int baseX, baseY;
     float q[3];
 };
-static_assert(sizeof(RecordHead) == 60 && alignof(RecordHead) == 4);
+static_assert(sizeof(RecordHead) == 80 && alignof(RecordHead) == 8);
 static_assert(std::is_trivially_copyable_v<RecordHead> && std::is_trivially_copyable_v<Planes>);
 
 /// Bytes of the weights' planes: l1, l2, u1 and u2, adjacent in Planes.
 constexpr std::size_t kWeightBytes = 12 * sizeof(float);
 static_assert(offsetof(Planes, u2) + 3 * sizeof(float) - offsetof(Planes, l1) == kWeightBytes);
 
-/// Bytes of a record with `varyings` varyings: a whole line without them, else 4-byte aligned.
+/// Bytes of a record with `varyings` varyings, a multiple of 8 so that the edges stay aligned.
 constexpr std::size_t recordBytes(int varyings) {
-    if (varyings == 0) return sizeof(TileRenderer::Line);
-    return sizeof(RecordHead) + kWeightBytes +
-           3 * sizeof(float) * static_cast<std::size_t>(varyings);
+    const std::size_t planes =
+        varyings == 0 ? 0 : kWeightBytes + 3 * sizeof(float) * static_cast<std::size_t>(varyings);
+    return (sizeof(RecordHead) + planes + 7) / 8 * 8;
 }
 
 /// Whether `inner` lies within `outer`.
 bool contains(const PixelRect& outer, const PixelRect& inner) {
     return inner.x0 >= outer.x0 && inner.y0 >= outer.y0 && inner.x1 <= outer.x1 &&
            inner.y1 <= outer.y1;
+}
+
+/// Calls f(std::integral_constant<int, N>{}) for the N == n of N…: code that copies n
+/// varyings then copies a size known at compile time, inline moves instead of three calls to
+/// memcpy (with 3 varyings those calls were half of the tile loop's cost per triangle).
+template <class F, int... N>
+void withVaryingCount(int n, F&& f, std::integer_sequence<int, N...>) {
+    (void)((n == N ? (f(std::integral_constant<int, N>{}), true) : false) || ...);
+}
+template <class F>
+void withVaryingCount(int n, F&& f) {
+    withVaryingCount(n, f, std::make_integer_sequence<int, kMaxVaryings + 1>{});
 }
 
 void addCounters(RenderStats& to, const RenderStats& from) {
@@ -80,11 +97,14 @@ struct Binner {
                                       (at + s.recordBytes) / sizeof(TileRenderer::Line) + 1));
         std::byte* record = reinterpret_cast<std::byte*>(s.records.data()) + at;
         s.used = at + s.recordBytes;
+        CoverageSetup setup;
+        edgesOf(tri, setup);
         RecordHead head;
+        std::memcpy(head.e0, setup.e0, sizeof head.e0);
         head.box = tri.box;
-        for (int i = 0; i < 3; ++i) {
-            head.x[i] = static_cast<std::int32_t>(tri.x[i]);
-            head.y[i] = static_cast<std::int32_t>(tri.y[i]);
+        for (int i = 0; i < 2; ++i) {
+            head.dx[i] = static_cast<std::int32_t>(tri.x[i + 1] - tri.x[i]);
+            head.dy[i] = static_cast<std::int32_t>(tri.y[i + 1] - tri.y[i]);
         }
         head.baseX = planes.baseX;
         head.baseY = planes.baseY;
@@ -94,10 +114,12 @@ struct Binner {
             std::byte* rest = record + sizeof head;
             std::memcpy(rest, planes.l1, kWeightBytes);
             rest += kWeightBytes;
-            const std::size_t n = sizeof(float) * static_cast<std::size_t>(s.varyings);
-            std::memcpy(rest, planes.a0, n);
-            std::memcpy(rest + n, planes.d1, n);
-            std::memcpy(rest + 2 * n, planes.d2, n);
+            withVaryingCount(s.varyings, [&](auto count) {
+                constexpr std::size_t n = sizeof(float) * decltype(count)::value;
+                std::memcpy(rest, planes.a0, n);
+                std::memcpy(rest + n, planes.d1, n);
+                std::memcpy(rest + 2 * n, planes.d2, n);
+            });
         }
 
         const auto offset = static_cast<std::uint32_t>(at);
@@ -157,42 +179,45 @@ std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int hei
     const PixelRect rect{x0, y0, std::min(x0 + kTileSize, width) - 1,
                          std::min(y0 + kTileSize, height) - 1};
     std::size_t fragments = 0;
-    SnappedTriangle tri{};
-    CoverageSetup setup;
-    Planes planes{};  // what the record does not hold is never read (RecordHead)
+    CoverageSetup setup{};  // area2 is never read by the pixel loops
+    Planes planes{};        // what the record does not hold is never read (RecordHead)
     const auto at = static_cast<std::size_t>(tile);
     for (std::size_t s = first; s < first + count; ++s) {  // in submission order
         const Slice& slice = slices_[s];
-        const std::size_t n = sizeof(float) * static_cast<std::size_t>(slice.varyings);
         const auto* records = reinterpret_cast<const std::byte*>(slice.records.data());
-        for (std::uint32_t k = slice.start[at]; k < slice.start[at + 1]; ++k) {
-            const std::byte* record = records + slice.order[k];
-            RecordHead head;
-            std::memcpy(&head, record, sizeof head);
-            tri.box = head.box;
-            for (int i = 0; i < 3; ++i) {
-                tri.x[i] = head.x[i];
-                tri.y[i] = head.y[i];
+        withVaryingCount(slice.varyings, [&](auto varyings) {
+            constexpr std::size_t n = sizeof(float) * decltype(varyings)::value;
+            for (std::uint32_t k = slice.start[at]; k < slice.start[at + 1]; ++k) {
+                const std::byte* record = records + slice.order[k];
+                RecordHead head;
+                std::memcpy(&head, record, sizeof head);
+                const std::int64_t dx[3] = {head.dx[0], head.dx[1], -(head.dx[0] + head.dx[1])};
+                const std::int64_t dy[3] = {head.dy[0], head.dy[1], -(head.dy[0] + head.dy[1])};
+                for (int i = 0; i < 3; ++i) {  // as edgesOf() derives them
+                    setup.e0[i] = head.e0[i];
+                    setup.stepX[i] = -dy[i] * kSubPixel;
+                    setup.stepY[i] = dx[i] * kSubPixel;
+                }
+                setup.box = head.box;
+                // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
+                if (!contains(rect, setup.box)) {
+                    setup = restrictSetup(setup, rect);
+                    if (setup.box.empty()) continue;
+                }
+                planes.baseX = head.baseX;
+                planes.baseY = head.baseY;
+                std::memcpy(planes.q, head.q, sizeof head.q);
+                if constexpr (n > 0) {
+                    const std::byte* rest = record + sizeof head;
+                    std::memcpy(planes.l1, rest, kWeightBytes);
+                    rest += kWeightBytes;
+                    std::memcpy(planes.a0, rest, n);
+                    std::memcpy(planes.d1, rest + n, n);
+                    std::memcpy(planes.d2, rest + 2 * n, n);
+                }
+                fragments += rasterize(context, setup, planes);
             }
-            edgesOf(tri, setup);
-            // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
-            if (!contains(rect, setup.box)) {
-                setup = restrictSetup(setup, rect);
-                if (setup.box.empty()) continue;
-            }
-            planes.baseX = head.baseX;
-            planes.baseY = head.baseY;
-            std::memcpy(planes.q, head.q, sizeof head.q);
-            if (n > 0) {
-                const std::byte* rest = record + sizeof head;
-                std::memcpy(planes.l1, rest, kWeightBytes);
-                rest += kWeightBytes;
-                std::memcpy(planes.a0, rest, n);
-                std::memcpy(planes.d1, rest + n, n);
-                std::memcpy(planes.d2, rest + 2 * n, n);
-            }
-            fragments += rasterize(context, setup, planes);
-        }
+        });
     }
     return fragments;
 }

@@ -40,8 +40,8 @@ class TileRenderer {
              context, threads, stats);
     }
 
-    /// A record's storage: whole cache lines, so a record of 64 bytes (a triangle without
-    /// varyings) is one line.
+    /// A record's storage: cache-line aligned, records packed at multiples of 8 bytes (80
+    /// bytes for a triangle without varyings).
     struct alignas(64) Line {
         std::byte bytes[64];
     };

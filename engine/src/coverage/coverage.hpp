@@ -79,8 +79,7 @@ inline std::int64_t floorDivSub(std::int64_t v) {
 
 /// A snapped triangle as coverage needs it, before its edges: the vertices wound so that the
 /// inside is E ≥ 0, relative to the corner of the box's first pixel (box.x0·256, box.y0·256), so
-/// they fit 32 bits (the guard band bounds them) and a binned record can keep them instead of
-/// the 72 bytes of edges; edgesOf() derives the same edges from either.
+/// they fit 32 bits (the guard band bounds them); edgesOf() derives the edges from them.
 struct SnappedTriangle {
     std::int64_t x[3], y[3];  ///< grid units, relative to the box's first pixel corner
     PixelRect box;            ///< pixels whose centre (or samples, with reach) may be covered
