@@ -158,7 +158,8 @@ int runBench(const BenchOptions& o) {
             measureOpenGl(c, config, threads, peers, progress, results);
         }
     for (std::size_t i = 0; i < peers.running.size(); ++i)
-        if (Status st = peers.running[i].finish(); !st) peers.fail(results, threads[i], st.error().what());
+        if (Status st = peers.running[i].finish(); !st)
+            peers.fail(results, threads[i], st.error().what());
     const bool glFailed = peers.failed;
 
     printBenchTable(stdout, suite, results, threads);

@@ -47,7 +47,8 @@ int runGlRender(const RenderOptions& o) {
     std::vector<double> ms;
     for (int i = 0; i < std::max(1, o.frames); ++i) {
         const double before = stats.drawMs;
-        if (Status st = renderer->draw(scene, settings, stats); !st) return failed(st.error().what());
+        if (Status st = renderer->draw(scene, settings, stats); !st)
+            return failed(st.error().what());
         ms.push_back(stats.drawMs - before);
     }
     if (Status st = renderer->readBack(scene, settings, frame, stats); !st)

@@ -21,7 +21,10 @@ double nsPerTriangle(const Measurement& m, double ms) {
 
 double rasterRestNsPerTriangle(const Measurement& m) {
     const StageTimes& s = m.stages;
-    return s.rasterMs > 0.0 ? nsPerTriangle(m, s.rasterMs - s.frontEndMs - s.binningMs) : 0.0;
+    // Thread time throughout: the front end and binning are summed over threads, so the raster
+    // wall time counts once per thread (what is left includes waits at the batch barriers).
+    const double threadMs = s.rasterMs * std::max(1, m.threads);
+    return s.rasterMs > 0.0 ? nsPerTriangle(m, threadMs - s.frontEndMs - s.binningMs) : 0.0;
 }
 
 const Measurement* BenchResults::find(const std::string& caseName, const std::string& config,

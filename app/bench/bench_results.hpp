@@ -34,8 +34,9 @@ inline constexpr const char* kOpenGlTimeIncludes =
     "untimed, with the vertex normals lit configs need); no readback";
 inline constexpr const char* kStageColumnsMean =
     "engine CPU time per submitted triangle of the front end (reject, clip, snap, cull, set-up) "
-    "and of binning, summed over threads, and of the rest of raster (raster wall time minus "
-    "both); blank where the engine does not report a stage";
+    "and of binning, summed over threads, and of the rest of raster (raster wall time times "
+    "the threads, minus both: tiles, shading and waits at barriers); blank where the engine does "
+    "not report a stage";
 
 /// One measurement.
 struct Measurement {
