@@ -260,6 +260,7 @@ void TileRenderer::draw(const DrawJob& job, RasterizeFn rasterize, void* context
     ScreenVertex* screen = screen_.data();
     DrawJob binned = job;
     binned.screen = screen;
+    binned.lanes = laneSetup();  // the SIMD target, chosen once per draw
 
 #pragma omp parallel num_threads(slices)
     {

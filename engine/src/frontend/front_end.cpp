@@ -11,7 +11,9 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
                           int height, std::size_t first, std::size_t end, RasterizeFn emit,
                           void* context, RenderStats& stats, int subPixelBits, int sampleReach,
                           const ScreenVertex* screen) {
-    const DrawJob job{&in, layout, cull, width, height, subPixelBits, sampleReach, screen};
+    const DrawJob job{&in,         layout, cull,
+                      width,       height, subPixelBits,
+                      sampleReach, screen, screen ? laneSetup() : nullptr};
     CoverageSetup setup;
     return front::frontEnd(
         job, first, end,

@@ -92,6 +92,60 @@ struct ScreenSpace {
     }
 };
 
+/// The front end's setup stage in vector lanes (setup_lanes.cpp): what it reads of a draw.
+struct LaneInput {
+    const std::uint32_t* indices = nullptr;  ///< the draw's indices, three per triangle
+    std::size_t vertices = 0;                ///< clip positions (valid indices are below)
+    const ScreenVertex* screen = nullptr;    ///< the vertex pass's output
+    int width = 0, height = 0;               ///< image size in pixels
+    int sampleReach = 0;                     ///< as DrawJob::sampleReach
+    bool cull = false;                       ///< drop back faces
+};
+
+/// What the lanes stage tells the front end's loop of a chunk of up to kSize triangles: in
+/// submission order, the triangles the loop must still visit (those left to the scalar path,
+/// and those that survived reject, cull and the "covers no pixel centre" exit, with their
+/// snapped triangle), and the counters of the triangles it settled. Survivors are stored
+/// structure of arrays, as the lanes compress them; `kSlack` entries past the end take a whole
+/// vector's store.
+struct LaneChunk {
+    static constexpr std::size_t kSize = 256;
+    static constexpr std::size_t kSlack = 16;
+    /// Set in an entry of `at` for a triangle the scalar path takes.
+    static constexpr std::uint32_t kScalar = 0x80000000u;
+
+    std::uint32_t count = 0;              ///< entries of `at`
+    std::uint32_t at[kSize + kSlack];     ///< triangle − chunk start, | kScalar for scalar
+    std::int32_t x[3][kSize + kSlack];    ///< survivors' SnappedTriangle::x, in order
+    std::int32_t y[3][kSize + kSlack];    ///< SnappedTriangle::y
+    std::int32_t box[4][kSize + kSlack];  ///< SnappedTriangle::box: x0, y0, x1, y1
+    std::int32_t area2[kSize + kSlack];   ///< SnappedTriangle::area2
+    std::size_t trianglesIn = 0;          ///< RenderStats' counters of the lanes' triangles
+    std::size_t trianglesCulled = 0;
+    std::size_t trianglesRasterized = 0;
+};
+
+/// The lanes stage: reject, cull, box, and the exit for boxes without a pixel centre, for
+/// triangles [first, end) of `in` (end − first ≤ LaneChunk::kSize), a whole vector of
+/// triangles at once. Takes the triangles whose vertices are all in front of the near plane
+/// and in the guard band and whose snapped box spans under kLaneExtent grid units each way
+/// (so that every edge product fits 32 bits); leaves the others to the scalar path.
+using LaneSetupFn = void (*)(const LaneInput& in, std::size_t first, std::size_t end,
+                             LaneChunk& out);
+
+/// Grid units a triangle's box may span, each way, to take the lanes: differences of
+/// coordinates stay under 2^15, so products of two stay under 2^30 and sums of two fit 32 bits.
+inline constexpr std::int32_t kLaneExtent = 1 << 15;
+
+/// The lanes stage for the best SIMD target this CPU has (Highway's run-time choice, which tests
+/// may restrict with hwy::SetSupportedTargetsForTest), chosen once per draw; null when turned
+/// off (enableLaneSetup()).
+LaneSetupFn laneSetup();
+
+/// Turns the lanes stage off (every triangle takes the scalar front end, the reference it must
+/// equal) or back on, for the whole process. Not for use while a draw runs.
+void enableLaneSetup(bool enabled);
+
 /// One draw as the front end sees it: the inputs that stay the same for all its triangles.
 struct DrawJob {
     const DrawInput* in = nullptr;         ///< the vertex stage's output
@@ -101,6 +155,7 @@ struct DrawJob {
     int subPixelBits = kSubPixelBits;      ///< coverage grid of 1/2^subPixelBits px
     int sampleReach = 0;                   ///< grid units boxes reach past centres (multisampling)
     const ScreenVertex* screen = nullptr;  ///< ScreenVertex of every clip position, or null
+    LaneSetupFn lanes = nullptr;           ///< the lanes stage (with `screen` only), or null
 };
 
 /// The per-triangle rasterizer of a variant: covers `setup` and shades with `planes`; returns

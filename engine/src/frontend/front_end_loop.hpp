@@ -76,6 +76,10 @@ inline void planeBase(const glm::dvec2 (&s)[3], float W, float H, int& baseX, in
 /// (a SnappedTriangle with a non-empty box, and the planes of the whole triangle, unclipped by
 /// the guard band) for each part that covers pixels; returns the sum of what `emit` returned.
 /// Adds its counters to `stats`. drawTriangles() is this with a rasterizer as `emit`.
+/// With job.lanes (and job.screen), chunks of triangles first take the lanes stage, which
+/// settles most of them a vector at a time; the loop then visits only its survivors and the
+/// triangles it leaves to the scalar stages below, in submission order, so the triangles
+/// emitted and the counters are the same either way.
 template <class Emit>
 std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emit&& emit,
                      RenderStats& stats) {
@@ -93,20 +97,23 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
     std::size_t fragments = 0;
     end = std::min(end, in.indices.size() / 3);
 
-    for (std::size_t t = 3 * first; t < 3 * end; t += 3) {
-        // The vertices of a mesh come in no useful order, so each corner's fetch would wait on
-        // memory; asking for those of a triangle kPrefetch ahead hides that wait.
-        if (t + 3 * kPrefetch < 3 * end) {
-            for (std::size_t j = t + 3 * kPrefetch; j < t + 3 * kPrefetch + 3; ++j) {
-                const std::uint32_t i = in.indices[j];
-                if (i >= nv) continue;
-                __builtin_prefetch(in.clip.data() + i);
-                if (screen) __builtin_prefetch(screen + i);
-            }
-        }
+    auto fetch = [&](const std::uint32_t(&idx)[3], ClipVertex(&v)[3]) {
+        for (int j = 0; j < 3; ++j) v[j] = fetchVertex(in, layout, idx[j]);
+    };
+    // 5. Planes of a triangle in the guard band that covers a pixel centre, then emit.
+    auto planesAndEmit = [&](const SnappedTriangle& tri, const ClipVertex(&v)[3]) {
+        glm::dvec2 s[3];
+        for (int j = 0; j < 3; ++j) s[j] = screenPosition(v[j].pos);
+        int baseX = 0, baseY = 0;
+        planeBase(s, space.W, space.H, baseX, baseY);
+        if (makePlanes(s, v, count, baseX, baseY, planes)) fragments += emit(tri, planes);
+    };
+
+    // The scalar stages, one triangle.
+    auto triangle = [&](std::size_t t) {
         // 1. Fetch and reject.
         const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
-        if (idx[0] >= nv || idx[1] >= nv || idx[2] >= nv) continue;
+        if (idx[0] >= nv || idx[1] >= nv || idx[2] >= nv) return;
         ++stats.trianglesIn;
         ScreenVertex own[3];
         const ScreenVertex* corner[3];
@@ -119,17 +126,12 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
             }
         }
         const Reach reach = classify(corner);
-        if (reach == Reach::Nowhere) continue;
+        if (reach == Reach::Nowhere) return;
         bool clipped = reach == Reach::CrossesNear, culled = false, drawn = false;
 
         // One triangle of the fan: `sv` its screen vertices, `vertices()` its clip vertices
         // with their varyings, asked for only when the planes are built.
         auto drawPart = [&](const ScreenVertex(&sv)[3], auto&& vertices) {
-            glm::dvec2 s[3];
-            auto project = [&](const ClipVertex(&v)[3]) {
-                for (int j = 0; j < 3; ++j) s[j] = screenPosition(v[j].pos);
-            };
-            int baseX = 0, baseY = 0;
             if (sv[0].flags & sv[1].flags & sv[2].flags & ScreenVertex::kInGuard) {
                 // 3. Snap, 4. cull, 5. planes: only for triangles that cover a pixel centre,
                 // since most triangles of a dense mesh cover none and the planes (and the
@@ -143,17 +145,16 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                 }
                 drawn = true;
                 if (tri.box.empty()) return;
-                const ClipVertex(&v)[3] = vertices();
-                project(v);
-                planeBase(s, space.W, space.H, baseX, baseY);
-                if (makePlanes(s, v, count, baseX, baseY, planes)) fragments += emit(tri, planes);
+                planesAndEmit(tri, vertices());
                 return;
             }
             // Beyond the guard band: 5. planes of the whole triangle, 4. cull, then the screen
             // triangle is clipped to the band for coverage only (3. snap per part), so
             // interpolation is unchanged.
             const ClipVertex(&v)[3] = vertices();
-            project(v);
+            glm::dvec2 s[3];
+            for (int j = 0; j < 3; ++j) s[j] = screenPosition(v[j].pos);
+            int baseX = 0, baseY = 0;
             planeBase(s, space.W, space.H, baseX, baseY);
             if (!makePlanes(s, v, count, baseX, baseY, planes)) return;
             clipped = true;
@@ -172,21 +173,18 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
             }
         };
 
-        auto fetch = [&](ClipVertex(&v)[3]) {
-            for (int j = 0; j < 3; ++j) v[j] = fetchVertex(in, layout, idx[j]);
-        };
         if (reach == Reach::InFront) {
             // No copies: the triangle is its own fan, its varyings fetched on demand.
             const ScreenVertex sv[3] = {*corner[0], *corner[1], *corner[2]};
             ClipVertex v[3];
             drawPart(sv, [&]() -> const ClipVertex(&)[3] {
-                fetch(v);
+                fetch(idx, v);
                 return v;
             });
         } else {
             // 2. Near clip: a fan of one or two triangles.
             ClipVertex v[3];
-            fetch(v);
+            fetch(idx, v);
             const NearPolygon poly = clipNear(v, in.nearPlane);
             for (std::size_t k = 1; k + 1 < poly.size; ++k) {
                 const ClipVertex tri[3] = {poly.v[0], poly.v[k], poly.v[k + 1]};
@@ -198,6 +196,60 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
         stats.trianglesClipped += clipped ? 1 : 0;
         stats.trianglesCulled += (culled && !drawn) ? 1 : 0;
         stats.trianglesRasterized += drawn ? 1 : 0;
+    };
+
+    if (!(job.lanes && screen)) {
+        for (std::size_t t = 3 * first; t < 3 * end; t += 3) {
+            // The vertices of a mesh come in no useful order, so each corner's fetch would wait
+            // on memory; asking for those of a triangle kPrefetch ahead hides that wait.
+            if (t + 3 * kPrefetch < 3 * end) {
+                for (std::size_t j = t + 3 * kPrefetch; j < t + 3 * kPrefetch + 3; ++j) {
+                    const std::uint32_t i = in.indices[j];
+                    if (i >= nv) continue;
+                    __builtin_prefetch(in.clip.data() + i);
+                    if (screen) __builtin_prefetch(screen + i);
+                }
+            }
+            triangle(t);
+        }
+        return fragments;
+    }
+
+    const LaneInput lanes{in.indices.data(), nv,      screen, job.width, job.height,
+                          job.sampleReach,   job.cull};
+    LaneChunk chunk;
+    for (std::size_t c = first; c < end; c += LaneChunk::kSize) {
+        job.lanes(lanes, c, std::min(end, c + LaneChunk::kSize), chunk);
+        stats.trianglesIn += chunk.trianglesIn;
+        stats.trianglesCulled += chunk.trianglesCulled;
+        stats.trianglesRasterized += chunk.trianglesRasterized;
+        std::size_t k = 0;  // the next survivor
+        for (std::uint32_t e = 0; e < chunk.count; ++e) {
+            // The clip positions of a survivor a few entries ahead (see kPrefetch).
+            if (e + kPrefetch / 2 < chunk.count) {
+                const std::size_t ahead =
+                    3 * (c + (chunk.at[e + kPrefetch / 2] & ~LaneChunk::kScalar));
+                for (std::size_t j = ahead; j < ahead + 3; ++j)
+                    if (in.indices[j] < nv) __builtin_prefetch(in.clip.data() + in.indices[j]);
+            }
+            const std::size_t t = 3 * (c + (chunk.at[e] & ~LaneChunk::kScalar));
+            if (chunk.at[e] & LaneChunk::kScalar) {
+                triangle(t);
+                continue;
+            }
+            SnappedTriangle tri;
+            for (int j = 0; j < 3; ++j) {
+                tri.x[j] = chunk.x[j][k];
+                tri.y[j] = chunk.y[j][k];
+            }
+            tri.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
+            tri.area2 = chunk.area2[k];
+            ++k;
+            const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
+            ClipVertex v[3];
+            fetch(idx, v);
+            planesAndEmit(tri, v);
+        }
     }
     return fragments;
 }

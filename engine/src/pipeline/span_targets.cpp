@@ -53,6 +53,7 @@ std::int64_t spanTargetsCompiled() {
 
 void enableSpanLoops(bool enabled) {
     gSpanLoops.store(enabled, std::memory_order_relaxed);
+    enableLaneSetup(enabled);
 }
 
 const char* spanTarget() {

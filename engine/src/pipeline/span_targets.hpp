@@ -31,8 +31,9 @@ const char* spanTarget();
 std::int64_t spanTargetsCompiled();
 
 /// Turns the vector loops off (spanLoop(), blockLoop() and msaaSpanLoop() return null: every
-/// triangle takes the scalar loop) or back on, for the whole process: the scalar loop is the
-/// reference the vector targets must equal bit for bit. Not for use while a draw runs.
+/// triangle takes the scalar loop; and laneSetup() too: every triangle takes the scalar front
+/// end) or back on, for the whole process: the scalar code is the reference the vector targets
+/// must equal bit for bit. Not for use while a draw runs.
 void enableSpanLoops(bool enabled);
 
 /// Whether the vector loops are on (enableSpanLoops()).

@@ -1,0 +1,212 @@
+// The front end's setup stage in vector lanes (LaneSetupFn, front_end.hpp), compiled once per SIMD
+// target: hwy/foreach_target.h compiles this file once for each target Highway enables (the span
+// loop's), and HWY_DYNAMIC_DISPATCH picks the best one the CPU has, once per draw.
+//
+// One lane per triangle: the vertex pass's snapped positions and flags are gathered, and the
+// reject (classify()), the facing and cull (snapTriangle()'s area in 32 bits, exact for boxes
+// under kLaneExtent), the pixel box and the exit for an empty box run for a whole vector of
+// triangles at once, the scalar stages' integer arithmetic lane by lane. The survivors are
+// compressed into the chunk in submission order with the triangles the lanes leave to the
+// scalar path, so the loop that follows emits exactly what the scalar front end emits.
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "frontend/setup_lanes.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+#include "coverage/coverage.hpp"
+#include "frontend/front_end.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::detail::HWY_NAMESPACE {
+namespace {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+using Di = hn::ScalableTag<std::int32_t>;
+using Du = hn::RebindToUnsigned<Di>;
+using VecI = hn::Vec<Di>;
+using VecU = hn::Vec<Du>;
+using MaskI = hn::Mask<Di>;
+
+static_assert(sizeof(ScreenVertex) == 3 * sizeof(std::int32_t));
+
+/// Lanes where flag bit `bit` of `flags` is set.
+HWY_INLINE MaskI hasFlag(VecI flags, std::uint32_t bit) {
+    const Di d;
+    const VecI b = hn::Set(d, static_cast<std::int32_t>(bit));
+    return hn::Ne(hn::And(flags, b), hn::Zero(d));
+}
+
+/// Triangles first + [0, present) of the chunk that starts at `chunk` (present ≤ the lanes; a
+/// chunk's tail has fewer); `survivors` counts the chunk's survivors so far.
+HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t first,
+                            std::size_t present, std::size_t& survivors, LaneChunk& out) {
+    const Di d;
+    const Du du;
+    const std::size_t n = hn::Lanes(d);
+    // The indices, three per triangle; a tail's missing triangles read as invalid indices.
+    VecU i0, i1, i2;
+    if (present == n) {
+        hn::LoadInterleaved3(du, in.indices + 3 * first, i0, i1, i2);
+    } else {
+        HWY_ALIGN std::uint32_t tail[3 * HWY_MAX_BYTES / sizeof(std::uint32_t)];
+        std::fill(tail, tail + 3 * n, 0xFFFFFFFFu);
+        std::copy(in.indices + 3 * first, in.indices + 3 * (first + present), tail);
+        hn::LoadInterleaved3(du, tail, i0, i1, i2);
+    }
+    // Indices past the clip positions: the scalar loop skips the triangle, uncounted.
+    const VecU nv = hn::Set(du, static_cast<std::uint32_t>(in.vertices));
+    const MaskI valid =
+        hn::RebindMask(d, hn::And(hn::And(hn::Lt(i0, nv), hn::Lt(i1, nv)), hn::Lt(i2, nv)));
+    // ScreenVertex i is three int32 at 3i: gathered where valid, vertex 0's elsewhere.
+    const auto* base = reinterpret_cast<const std::int32_t*>(in.screen);
+    const VecI three = hn::Set(d, 3);
+    const VecI o0 = hn::Mul(hn::IfThenElseZero(valid, hn::BitCast(d, i0)), three);
+    const VecI o1 = hn::Mul(hn::IfThenElseZero(valid, hn::BitCast(d, i1)), three);
+    const VecI o2 = hn::Mul(hn::IfThenElseZero(valid, hn::BitCast(d, i2)), three);
+    const VecI f0 = hn::GatherIndex(d, base + 2, o0);
+    const VecI f1 = hn::GatherIndex(d, base + 2, o1);
+    const VecI f2 = hn::GatherIndex(d, base + 2, o2);
+
+    // classify(): Nowhere (settled here), CrossesNear (the scalar path) or InFront; and beyond
+    // the guard band (the scalar path too).
+    const VecI all = hn::And(hn::And(f0, f1), f2);
+    const VecI any = hn::Or(hn::Or(f0, f1), f2);
+    constexpr std::uint32_t kOutside =
+        ScreenVertex::kLeft | ScreenVertex::kRight | ScreenVertex::kAbove | ScreenVertex::kBelow;
+    const MaskI allFront = hasFlag(all, ScreenVertex::kFront);
+    const MaskI nowhere = hn::Or(hn::Or(hn::Not(hasFlag(all, ScreenVertex::kFinite)),
+                                        hn::Not(hasFlag(any, ScreenVertex::kFront))),
+                                 hn::And(allFront, hasFlag(all, kOutside)));
+    const MaskI reaches = hn::AndNot(nowhere, valid);
+    MaskI scalar = hn::AndNot(hn::And(allFront, hasFlag(all, ScreenVertex::kInGuard)), reaches);
+    MaskI lanes = hn::AndNot(scalar, reaches);
+    MaskI emit = hn::FirstN(d, 0);
+
+    if (!hn::AllFalse(d, lanes)) {
+        const VecI x0 = hn::GatherIndex(d, base, o0), y0 = hn::GatherIndex(d, base + 1, o0);
+        VecI x1 = hn::GatherIndex(d, base, o1), y1 = hn::GatherIndex(d, base + 1, o1);
+        VecI x2 = hn::GatherIndex(d, base, o2), y2 = hn::GatherIndex(d, base + 1, o2);
+        // The box on the grid; wider than the lanes' 32-bit products allow: the scalar path.
+        const VecI minX = hn::Min(hn::Min(x0, x1), x2), maxX = hn::Max(hn::Max(x0, x1), x2);
+        const VecI minY = hn::Min(hn::Min(y0, y1), y2), maxY = hn::Max(hn::Max(y0, y1), y2);
+        const VecI extent = hn::Set(d, kLaneExtent);
+        const MaskI narrow =
+            hn::And(hn::Lt(hn::Sub(maxX, minX), extent), hn::Lt(hn::Sub(maxY, minY), extent));
+        scalar = hn::Or(scalar, hn::AndNot(narrow, lanes));
+        lanes = hn::And(lanes, narrow);
+
+        // snapTriangle(): twice the signed area, the facing, the cull and the winding made
+        // positive (vertices 1 and 2 swapped where the area is negative).
+        const VecI zero = hn::Zero(d);
+        VecI area = hn::Sub(hn::Mul(hn::Sub(x1, x0), hn::Sub(y2, y0)),
+                            hn::Mul(hn::Sub(y1, y0), hn::Sub(x2, x0)));
+        const MaskI degenerate = hn::Eq(area, zero);
+        const MaskI front = hn::Lt(area, zero);
+        const MaskI culled = in.cull ? hn::Gt(area, zero) : hn::FirstN(d, 0);
+        const MaskI drawn = hn::AndNot(hn::Or(degenerate, culled), lanes);
+        out.trianglesCulled += hn::CountTrue(d, hn::And(culled, lanes));
+        out.trianglesRasterized += hn::CountTrue(d, drawn);
+        const VecI sx = hn::IfThenElse(front, x2, x1), sy = hn::IfThenElse(front, y2, y1);
+        x2 = hn::IfThenElse(front, x1, x2);
+        y2 = hn::IfThenElse(front, y1, y2);
+        x1 = sx;
+        y1 = sy;
+        area = hn::Abs(area);
+
+        // The pixels whose centre (i·256 + 128), or with reach a sample, may be covered, within
+        // the image; none: the triangle covers no pixel centre and ends here.
+        const VecI reach = hn::Set(d, in.sampleReach);
+        const VecI up = hn::Set(d, static_cast<std::int32_t>(kSubPixel - 1 - kSubPixel / 2));
+        const VecI down = hn::Set(d, static_cast<std::int32_t>(kSubPixel / 2));
+        const VecI bx0 =
+            hn::Max(zero, hn::ShiftRight<kSubPixelBits>(hn::Add(hn::Sub(minX, reach), up)));
+        const VecI by0 =
+            hn::Max(zero, hn::ShiftRight<kSubPixelBits>(hn::Add(hn::Sub(minY, reach), up)));
+        const VecI bx1 =
+            hn::Min(hn::Set(d, in.width - 1),
+                    hn::ShiftRight<kSubPixelBits>(hn::Sub(hn::Add(maxX, reach), down)));
+        const VecI by1 =
+            hn::Min(hn::Set(d, in.height - 1),
+                    hn::ShiftRight<kSubPixelBits>(hn::Sub(hn::Add(maxY, reach), down)));
+        emit = hn::AndNot(hn::Or(hn::Gt(bx0, bx1), hn::Gt(by0, by1)), drawn);
+
+        if (!hn::AllFalse(d, emit)) {
+            // SnappedTriangle's coordinates: relative to the box's first pixel corner.
+            const VecI cx = hn::ShiftLeft<kSubPixelBits>(bx0);
+            const VecI cy = hn::ShiftLeft<kSubPixelBits>(by0);
+            const std::size_t at = survivors;
+            hn::CompressStore(hn::Sub(x0, cx), emit, d, out.x[0] + at);
+            hn::CompressStore(hn::Sub(x1, cx), emit, d, out.x[1] + at);
+            hn::CompressStore(hn::Sub(x2, cx), emit, d, out.x[2] + at);
+            hn::CompressStore(hn::Sub(y0, cy), emit, d, out.y[0] + at);
+            hn::CompressStore(hn::Sub(y1, cy), emit, d, out.y[1] + at);
+            hn::CompressStore(hn::Sub(y2, cy), emit, d, out.y[2] + at);
+            hn::CompressStore(bx0, emit, d, out.box[0] + at);
+            hn::CompressStore(by0, emit, d, out.box[1] + at);
+            hn::CompressStore(bx1, emit, d, out.box[2] + at);
+            hn::CompressStore(by1, emit, d, out.box[3] + at);
+            survivors += hn::CompressStore(area, emit, d, out.area2 + at);
+        }
+    }
+
+    out.trianglesIn +=
+        hn::CountTrue(d, hn::AndNot(scalar, valid));  // the scalar path counts its own
+
+    // The loop's entries, in submission order: survivors and the scalar path's triangles.
+    const MaskI visit = hn::Or(emit, scalar);
+    if (hn::AllFalse(d, visit)) return;
+    const VecI offsets = hn::Iota(d, static_cast<std::int32_t>(first - chunk));
+    const VecI tagged = hn::IfThenElse(
+        scalar, hn::Or(offsets, hn::Set(d, static_cast<std::int32_t>(LaneChunk::kScalar))),
+        offsets);
+    out.count += static_cast<std::uint32_t>(
+        hn::CompressStore(tagged, visit, d, reinterpret_cast<std::int32_t*>(out.at) + out.count));
+}
+
+/// LaneSetupFn for this target.
+void setupLanes(const LaneInput& in, std::size_t first, std::size_t end, LaneChunk& out) {
+    const std::size_t n = hn::Lanes(Di());
+    out.count = 0;
+    out.trianglesIn = out.trianglesCulled = out.trianglesRasterized = 0;
+    std::size_t survivors = 0;
+    for (std::size_t t = first; t < end; t += n)
+        setupVector(in, first, t, std::min(n, end - t), survivors, out);
+}
+
+}  // namespace
+
+LaneSetupFn laneSetupOf() {
+    return &setupLanes;
+}
+
+}  // namespace facet::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#include <atomic>
+
+namespace facet::detail {
+namespace {
+std::atomic<bool> gLaneSetup{true};
+}  // namespace
+
+HWY_EXPORT(laneSetupOf);
+
+LaneSetupFn laneSetup() {
+    if (!gLaneSetup.load(std::memory_order_relaxed)) return nullptr;
+    return HWY_DYNAMIC_DISPATCH(laneSetupOf)();
+}
+
+void enableLaneSetup(bool enabled) {
+    gLaneSetup.store(enabled, std::memory_order_relaxed);
+}
+
+}  // namespace facet::detail
+#endif  // HWY_ONCE
