@@ -104,10 +104,9 @@ struct LaneInput {
 
 /// What the lanes stage tells the front end's loop of a chunk of up to kSize triangles: in
 /// submission order, the triangles the loop must still visit (those left to the scalar path,
-/// and those that survived reject, cull and the "covers no pixel centre" exit, with their
-/// snapped triangle), and the counters of the triangles it settled. Survivors are stored
-/// structure of arrays, as the lanes compress them; `kSlack` entries past the end take a whole
-/// vector's store.
+/// and those that survived reject, cull and the "covers no pixel centre" exit, whose snapped
+/// triangle sits at their place in the arrays), and the counters of the triangles it settled.
+/// Structure of arrays, written a whole vector at a time: `kSlack` entries past the end.
 struct LaneChunk {
     static constexpr std::size_t kSize = 256;
     static constexpr std::size_t kSlack = 16;
@@ -115,8 +114,8 @@ struct LaneChunk {
     static constexpr std::uint32_t kScalar = 0x80000000u;
 
     std::uint32_t count = 0;              ///< entries of `at`
-    std::uint32_t at[kSize + kSlack];     ///< triangle − chunk start, | kScalar for scalar
-    std::int32_t x[3][kSize + kSlack];    ///< survivors' SnappedTriangle::x, in order
+    std::uint32_t at[kSize];              ///< triangle − chunk start, | kScalar for scalar
+    std::int32_t x[3][kSize + kSlack];    ///< survivors' SnappedTriangle::x, by triangle
     std::int32_t y[3][kSize + kSlack];    ///< SnappedTriangle::y
     std::int32_t box[4][kSize + kSlack];  ///< SnappedTriangle::box: x0, y0, x1, y1
     std::int32_t area2[kSize + kSlack];   ///< SnappedTriangle::area2

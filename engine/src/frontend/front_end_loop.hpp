@@ -223,16 +223,16 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
         stats.trianglesIn += chunk.trianglesIn;
         stats.trianglesCulled += chunk.trianglesCulled;
         stats.trianglesRasterized += chunk.trianglesRasterized;
-        std::size_t k = 0;  // the next survivor
         for (std::uint32_t e = 0; e < chunk.count; ++e) {
-            // The clip positions of a survivor a few entries ahead (see kPrefetch).
+            // The clip positions of a triangle a few entries ahead (see kPrefetch).
             if (e + kPrefetch / 2 < chunk.count) {
                 const std::size_t ahead =
                     3 * (c + (chunk.at[e + kPrefetch / 2] & ~LaneChunk::kScalar));
                 for (std::size_t j = ahead; j < ahead + 3; ++j)
                     if (in.indices[j] < nv) __builtin_prefetch(in.clip.data() + in.indices[j]);
             }
-            const std::size_t t = 3 * (c + (chunk.at[e] & ~LaneChunk::kScalar));
+            const std::uint32_t k = chunk.at[e] & ~LaneChunk::kScalar;
+            const std::size_t t = 3 * (c + k);
             if (chunk.at[e] & LaneChunk::kScalar) {
                 triangle(t);
                 continue;
@@ -244,7 +244,6 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
             }
             tri.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
             tri.area2 = chunk.area2[k];
-            ++k;
             const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
             ClipVertex v[3];
             fetch(idx, v);

@@ -43,10 +43,19 @@ HWY_INLINE MaskI hasFlag(VecI flags, std::uint32_t bit) {
     return hn::Ne(hn::And(flags, b), hn::Zero(d));
 }
 
+/// Bit i set where lane i of `m` is true.
+HWY_INLINE std::uint64_t laneBits(MaskI m) {
+    std::uint8_t bytes[8] = {};
+    hn::StoreMaskBits(Di(), m, bytes);
+    std::uint64_t bits = 0;
+    for (int i = 0; i < 8; ++i) bits |= std::uint64_t{bytes[i]} << (8 * i);
+    return bits;
+}
+
 /// Triangles first + [0, present) of the chunk that starts at `chunk` (present ≤ the lanes; a
-/// chunk's tail has fewer); `survivors` counts the chunk's survivors so far.
+/// chunk's tail has fewer).
 HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t first,
-                            std::size_t present, std::size_t& survivors, LaneChunk& out) {
+                            std::size_t present, LaneChunk& out) {
     const Di d;
     const Du du;
     const std::size_t n = hn::Lanes(d);
@@ -138,36 +147,40 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
         emit = hn::AndNot(hn::Or(hn::Gt(bx0, bx1), hn::Gt(by0, by1)), drawn);
 
         if (!hn::AllFalse(d, emit)) {
-            // SnappedTriangle's coordinates: relative to the box's first pixel corner.
+            // SnappedTriangle's coordinates: relative to the box's first pixel corner. Stored
+            // at the triangle's place in the chunk, whole vectors (no compress: Highway's
+            // AVX2 compress copied a 1 KiB table per call, 16 instructions per triangle).
             const VecI cx = hn::ShiftLeft<kSubPixelBits>(bx0);
             const VecI cy = hn::ShiftLeft<kSubPixelBits>(by0);
-            const std::size_t at = survivors;
-            hn::CompressStore(hn::Sub(x0, cx), emit, d, out.x[0] + at);
-            hn::CompressStore(hn::Sub(x1, cx), emit, d, out.x[1] + at);
-            hn::CompressStore(hn::Sub(x2, cx), emit, d, out.x[2] + at);
-            hn::CompressStore(hn::Sub(y0, cy), emit, d, out.y[0] + at);
-            hn::CompressStore(hn::Sub(y1, cy), emit, d, out.y[1] + at);
-            hn::CompressStore(hn::Sub(y2, cy), emit, d, out.y[2] + at);
-            hn::CompressStore(bx0, emit, d, out.box[0] + at);
-            hn::CompressStore(by0, emit, d, out.box[1] + at);
-            hn::CompressStore(bx1, emit, d, out.box[2] + at);
-            hn::CompressStore(by1, emit, d, out.box[3] + at);
-            survivors += hn::CompressStore(area, emit, d, out.area2 + at);
+            const std::size_t at = first - chunk;
+            hn::StoreU(hn::Sub(x0, cx), d, out.x[0] + at);
+            hn::StoreU(hn::Sub(x1, cx), d, out.x[1] + at);
+            hn::StoreU(hn::Sub(x2, cx), d, out.x[2] + at);
+            hn::StoreU(hn::Sub(y0, cy), d, out.y[0] + at);
+            hn::StoreU(hn::Sub(y1, cy), d, out.y[1] + at);
+            hn::StoreU(hn::Sub(y2, cy), d, out.y[2] + at);
+            hn::StoreU(bx0, d, out.box[0] + at);
+            hn::StoreU(by0, d, out.box[1] + at);
+            hn::StoreU(bx1, d, out.box[2] + at);
+            hn::StoreU(by1, d, out.box[3] + at);
+            hn::StoreU(area, d, out.area2 + at);
         }
     }
 
-    out.trianglesIn +=
-        hn::CountTrue(d, hn::AndNot(scalar, valid));  // the scalar path counts its own
-
+    // The scalar path counts its own triangles.
+    out.trianglesIn += hn::CountTrue(d, hn::AndNot(scalar, valid));
     // The loop's entries, in submission order: survivors and the scalar path's triangles.
-    const MaskI visit = hn::Or(emit, scalar);
-    if (hn::AllFalse(d, visit)) return;
-    const VecI offsets = hn::Iota(d, static_cast<std::int32_t>(first - chunk));
-    const VecI tagged = hn::IfThenElse(
-        scalar, hn::Or(offsets, hn::Set(d, static_cast<std::int32_t>(LaneChunk::kScalar))),
-        offsets);
-    out.count += static_cast<std::uint32_t>(
-        hn::CompressStore(tagged, visit, d, reinterpret_cast<std::int32_t*>(out.at) + out.count));
+    std::uint64_t visit = laneBits(hn::Or(emit, scalar));
+    if (visit == 0) return;
+    const std::uint64_t slow = laneBits(scalar);
+    const auto offset = static_cast<std::uint32_t>(first - chunk);
+    std::uint32_t count = out.count;
+    do {
+        const auto lane = static_cast<std::uint32_t>(__builtin_ctzll(visit));
+        out.at[count++] = (offset + lane) | ((slow >> lane & 1u) != 0 ? LaneChunk::kScalar : 0u);
+        visit &= visit - 1;
+    } while (visit != 0);
+    out.count = count;
 }
 
 /// LaneSetupFn for this target.
@@ -175,9 +188,8 @@ void setupLanes(const LaneInput& in, std::size_t first, std::size_t end, LaneChu
     const std::size_t n = hn::Lanes(Di());
     out.count = 0;
     out.trianglesIn = out.trianglesCulled = out.trianglesRasterized = 0;
-    std::size_t survivors = 0;
     for (std::size_t t = first; t < end; t += n)
-        setupVector(in, first, t, std::min(n, end - t), survivors, out);
+        setupVector(in, first, t, std::min(n, end - t), out);
 }
 
 }  // namespace
