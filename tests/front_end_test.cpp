@@ -2,13 +2,16 @@
 // hand the rasterizer exactly what the per-corner front end does, bit for bit: the same
 // coverage setups, the same planes, the same counters, on random triangles and on the cases
 // where the stages decide something (degenerate, sub-pixel, near-plane crossing, beyond the
-// guard band, off screen, non-finite). And the tile renderer's binning (compact records, sorted
-// into tiles) must hand each tile exactly what the front end emitted, restricted to the tile.
+// guard band, off screen, non-finite). The lanes stage (laneSetup()) must give the scalar front
+// end's output too, on every SIMD target, in submission order. And the tile renderer's binning
+// (compact records, sorted into tiles) must hand each tile exactly what the front end emitted,
+// restricted to the tile.
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -16,9 +19,11 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include "binning/tiles.hpp"
 #include "frontend/front_end.hpp"
+#include "pipeline/span_targets.hpp"
 
 namespace facet::detail {
 namespace {
@@ -313,6 +318,163 @@ INSTANTIATE_TEST_SUITE_P(Configs, VertexPass,
 INSTANTIATE_TEST_SUITE_P(Configs, Binning,
                          testing::Values(Config{false, 8, 0, false}, Config{true, 8, 0, true},
                                          Config{false, 4, 0, true}, Config{false, 8, 96, false}),
+                         configName);
+
+/// Small triangles of every kind the lanes stage decides, mixed with ones it leaves to the
+/// scalar path (so that the order of the two is checked): vertices on pixel centres and corners
+/// (edges through centres: the top-left rule, boxes starting or ending on a centre), random
+/// sub-pixel positions, both windings, degenerate ones, boxes just under, at and over
+/// kLaneExtent, partly off the image, crossing the near plane and with invalid indices.
+Mesh laneCases(std::vector<std::uint32_t>& invalid) {
+    Mesh m;
+    std::mt19937 rng(20261126);
+    std::uniform_real_distribution<double> px(-8.0, kWidth + 8.0), py(-8.0, kHeight + 8.0),
+        unit(0.0, 1.0), depth(0.5, 20.0);
+    std::uniform_int_distribution<int> kind(0, 3), step(-6, 6), pick(0, 9);
+    auto w = [&] { return static_cast<float>(depth(rng)); };
+    // A coordinate near `c`: on a pixel centre, a pixel corner, a grid point or anywhere.
+    auto place = [&](double c) {
+        switch (kind(rng)) {
+            case 0:
+                return std::floor(c) + 0.5;
+            case 1:
+                return std::floor(c);
+            case 2:
+                return std::floor(c * 256.0) / 256.0;
+            default:
+                return c;
+        }
+    };
+    for (int i = 0; i < 6000; ++i) {
+        const double x = px(rng), y = py(rng);
+        const int what = pick(rng);
+        if (what < 6) {  // a few pixels across, either winding
+            const double s = what < 3 ? 0.7 : 3.0;
+            m.add(at(place(x), place(y), w()),
+                  at(place(x + s * step(rng)), place(y + s * step(rng)), w()),
+                  at(place(x + s * step(rng)), place(y + s * step(rng)), w()));
+        } else if (what == 6) {  // right angles on centres: edges through centres both ways
+            const double cx = std::floor(x) + 0.5, cy = std::floor(y) + 0.5;
+            const double a = step(rng), b = step(rng);
+            m.add(at(cx, cy, 2.0f), at(cx + a, cy, 2.0f), at(cx, cy + b, 2.0f));
+        } else if (what == 7) {  // degenerate: collinear or a repeated vertex
+            const double dx = step(rng) * 0.25, dy = step(rng) * 0.25;
+            m.add(at(x, y, 1.0f), at(x + dx, y + dy, 2.0f), at(x + 2 * dx, y + 2 * dy, 3.0f));
+            m.add(at(x, y, 1.0f), at(x, y, 1.0f), at(x + dy, y + dx, 1.0f));
+        } else if (what == 8) {  // boxes at the lanes' 32-bit limit, in grid units
+            const std::int32_t e = kLaneExtent + step(rng) / 3;  // − 2 … + 2
+            const double s = e / 256.0;
+            const double ox = std::floor(x * 256.0) / 256.0 - s / 2;
+            const double oy = std::floor(y * 256.0) / 256.0 - s / 2;
+            if (rng() & 1)
+                m.add(at(ox, oy, 1.0f), at(ox + s, oy, 1.0f), at(ox, oy + s, 1.0f));
+            else
+                m.add(at(ox + s, oy + s, 1.0f), at(ox + s, oy, 1.0f),
+                      at(ox, oy + unit(rng) * s, 1.0f));
+        } else {  // the scalar path's: across the near plane, beyond the guard band
+            if (rng() & 1) {
+                const float wa = static_cast<float>(unit(rng) * 0.02);
+                m.add({x * wa, y * wa, 0.0f, wa}, at(x + 3, y, 1.0f), at(x, y + 3, 2.0f));
+            } else {
+                m.add(at(x, y, 1.0f), at(x + 1e5, y, 1.0f), at(x, y + 2, 1.0f));
+            }
+        }
+    }
+    // Invalid indices here and there (the triangle is skipped, uncounted).
+    for (std::size_t t = 5; t < m.indices.size() / 3; t += 97) {
+        m.indices[3 * t + t % 3] = static_cast<std::uint32_t>(m.clip.size() + t);
+        invalid.push_back(static_cast<std::uint32_t>(t));
+    }
+    return m;
+}
+
+/// The snapped triangles the lanes stage settles itself, over [first, end).
+std::size_t laneSurvivors(LaneSetupFn lanes, const LaneInput& in, std::size_t first,
+                          std::size_t end, std::size_t& settled) {
+    std::size_t survivors = 0;
+    LaneChunk chunk;
+    for (std::size_t c = first; c < end; c += LaneChunk::kSize) {
+        lanes(in, c, std::min(end, c + LaneChunk::kSize), chunk);
+        for (std::uint32_t e = 0; e < chunk.count; ++e)
+            survivors += (chunk.at[e] & LaneChunk::kScalar) == 0 ? 1 : 0;
+        settled += chunk.trianglesIn;
+    }
+    return survivors;
+}
+
+class LaneSetup : public testing::TestWithParam<Config> {};
+
+TEST_P(LaneSetup, EmitsWhatTheScalarFrontEndEmitsOnEveryTarget) {
+    const Config c = GetParam();
+    std::vector<std::uint32_t> invalid;
+    const Mesh mesh = laneCases(invalid);
+    const DrawInput in = mesh.input();
+    const VaryingLayout layout{c.color, false, false};
+    const ScreenSpace space = ScreenSpace::of(kWidth, kHeight, kNear, c.bits);
+    std::vector<ScreenVertex> screen;
+    for (const glm::vec4& p : mesh.clip) screen.push_back(space.vertex(p));
+    const std::size_t triangles = mesh.indices.size() / 3;
+    auto run = [&](std::size_t first, std::size_t end, DrawResult& r) {
+        r.out.varyings = layout.count();
+        drawTriangles(in, layout, c.cull, kWidth, kHeight, first, end, &record, &r.out, r.stats,
+                      c.bits, c.reach, screen.data());
+    };
+    // Whole chunks and vectors, and ranges that start and end inside them.
+    const std::size_t ranges[][2] = {{0, triangles}, {5, triangles - 3}, {250, 263}, {7, 8}};
+
+    hwy::SetSupportedTargetsForTest(0);
+    const std::int64_t targets = spanTargetsCompiled() & hwy::SupportedTargets();
+    std::size_t tested = 0;
+    for (std::int64_t rest = targets; rest != 0; rest &= rest - 1) {
+        const std::int64_t target = rest & -rest;
+        for (const auto& range : ranges) {
+            enableLaneSetup(false);
+            DrawResult scalar;
+            run(range[0], range[1], scalar);
+            enableLaneSetup(true);
+            hwy::SetSupportedTargetsForTest(target);
+            ASSERT_NE(laneSetup(), nullptr);
+            DrawResult lanes;
+            run(range[0], range[1], lanes);
+            const std::string where = std::string(hwy::TargetName(target)) + ", triangles " +
+                                      std::to_string(range[0]) + "…" + std::to_string(range[1]);
+            EXPECT_EQ(scalar.out.calls, lanes.out.calls) << where;
+            EXPECT_TRUE(scalar.out.bytes == lanes.out.bytes) << where;
+            EXPECT_EQ(scalar.stats.trianglesIn, lanes.stats.trianglesIn) << where;
+            EXPECT_EQ(scalar.stats.trianglesClipped, lanes.stats.trianglesClipped) << where;
+            EXPECT_EQ(scalar.stats.trianglesCulled, lanes.stats.trianglesCulled) << where;
+            EXPECT_EQ(scalar.stats.trianglesRasterized, lanes.stats.trianglesRasterized) << where;
+            hwy::SetSupportedTargetsForTest(0);
+        }
+        // Not vacuous: on this target the lanes settle most triangles and emit most of what is
+        // emitted; the scalar path still takes some (the order of the two is checked above).
+        hwy::SetSupportedTargetsForTest(target);
+        const LaneInput lanesIn{in.indices.data(), in.clip.size(), screen.data(), kWidth,
+                                kHeight,           c.reach,        c.cull};
+        std::size_t settled = 0;
+        const std::size_t survivors = laneSurvivors(laneSetup(), lanesIn, 0, triangles, settled);
+        hwy::SetSupportedTargetsForTest(0);
+        DrawResult all;
+        enableLaneSetup(false);
+        run(0, triangles, all);
+        enableLaneSetup(true);
+        EXPECT_GT(settled, all.stats.trianglesIn * 8 / 10) << hwy::TargetName(target);
+        EXPECT_GT(survivors, all.out.calls * 7 / 10) << hwy::TargetName(target);
+        EXPECT_LT(survivors, all.out.calls) << hwy::TargetName(target);
+        EXPECT_GT(all.out.calls, 2000u);
+        if (c.cull) {
+            EXPECT_GT(all.stats.trianglesCulled, 1000u);
+        }
+        std::printf("lanes front end checked on %s\n", hwy::TargetName(target));
+        ++tested;
+    }
+    EXPECT_GE(tested, 1u);
+    EXPECT_FALSE(invalid.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Configs, LaneSetup,
+                         testing::Values(Config{false, 8, 0, false}, Config{true, 8, 0, true},
+                                         Config{false, 4, 0, true}, Config{true, 8, 96, false}),
                          configName);
 
 // The snapped positions of the vertex pass are the grid's rounding of the screen position,
