@@ -132,9 +132,10 @@ struct LaneChunk {
 using LaneSetupFn = void (*)(const LaneInput& in, std::size_t first, std::size_t end,
                              LaneChunk& out);
 
-/// Grid units a triangle's box may span, each way, to take the lanes: differences of
-/// coordinates stay under 2^15, so products of two stay under 2^30 and sums of two fit 32 bits.
-inline constexpr std::int32_t kLaneExtent = 1 << 15;
+/// Grid units a triangle's snapped vertices may span, each way, to take the lanes (64 px):
+/// coordinates relative to the box and their differences stay under 2^15, so the area's and the
+/// edge functions' products of two stay under 2^30 and their sums fit 32 bits.
+inline constexpr std::int32_t kLaneExtent = 1 << 14;
 
 /// The lanes stage for the best SIMD target this CPU has (Highway's run-time choice, which tests
 /// may restrict with hwy::SetSupportedTargetsForTest), chosen once per draw; null when turned

@@ -144,7 +144,7 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                     return;
                 }
                 drawn = true;
-                if (tri.box.empty()) return;
+                if (tri.box.empty() || (sampleReach == 0 && coversNoCentre(tri))) return;
                 planesAndEmit(tri, vertices());
                 return;
             }

@@ -146,19 +146,52 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
                     hn::ShiftRight<kSubPixelBits>(hn::Sub(hn::Add(maxY, reach), down)));
         emit = hn::AndNot(hn::Or(hn::Gt(bx0, bx1), hn::Gt(by0, by1)), drawn);
 
+        // SnappedTriangle's coordinates: relative to the box's first pixel corner.
+        const VecI cx = hn::ShiftLeft<kSubPixelBits>(bx0);
+        const VecI cy = hn::ShiftLeft<kSubPixelBits>(by0);
+        const VecI xs[3] = {hn::Sub(x0, cx), hn::Sub(x1, cx), hn::Sub(x2, cx)};
+        const VecI ys[3] = {hn::Sub(y0, cy), hn::Sub(y1, cy), hn::Sub(y2, cy)};
+        if (in.sampleReach == 0) {
+            // coversNoCentre(): boxes of at most 2×2 pixels whose centres the edge functions
+            // (edgesOf(), top-left bias included) all leave out end here.
+            const VecI one = hn::Set(d, 1);
+            const MaskI wide = hn::Eq(hn::Sub(bx1, bx0), one);
+            const MaskI tall = hn::Eq(hn::Sub(by1, by0), one);
+            const MaskI small = hn::And(hn::Lt(hn::Sub(bx1, bx0), hn::Set(d, 2)),
+                                        hn::Lt(hn::Sub(by1, by0), hn::Set(d, 2)));
+            const VecI half = hn::Set(d, static_cast<std::int32_t>(kSubPixel / 2));
+            VecI c00 = zero, c10 = zero, c01 = zero, c11 = zero;  // OR of the edges at each centre
+            for (int i = 0; i < 3; ++i) {
+                const int j = (i + 1) % 3;
+                const VecI dx = hn::Sub(xs[j], xs[i]), dy = hn::Sub(ys[j], ys[i]);
+                const MaskI topLeft =
+                    hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
+                const VecI e = hn::Sub(
+                    hn::Sub(hn::Mul(dx, hn::Sub(half, ys[i])), hn::Mul(dy, hn::Sub(half, xs[i]))),
+                    hn::IfThenZeroElse(topLeft, one));
+                const VecI stepX = hn::Neg(hn::ShiftLeft<kSubPixelBits>(dy));
+                const VecI stepY = hn::ShiftLeft<kSubPixelBits>(dx);
+                c00 = hn::Or(c00, e);
+                c10 = hn::Or(c10, hn::Add(e, stepX));
+                c01 = hn::Or(c01, hn::Add(e, stepY));
+                c11 = hn::Or(c11, hn::Add(hn::Add(e, stepX), stepY));
+            }
+            const MaskI covered = hn::Or(
+                hn::Or(hn::Not(hn::Lt(c00, zero)), hn::And(wide, hn::Not(hn::Lt(c10, zero)))),
+                hn::Or(hn::And(tall, hn::Not(hn::Lt(c01, zero))),
+                       hn::And(hn::And(wide, tall), hn::Not(hn::Lt(c11, zero)))));
+            emit = hn::And(emit, hn::Or(hn::Not(small), covered));
+        }
+
         if (!hn::AllFalse(d, emit)) {
-            // SnappedTriangle's coordinates: relative to the box's first pixel corner. Stored
-            // at the triangle's place in the chunk, whole vectors (no compress: Highway's
-            // AVX2 compress copied a 1 KiB table per call, 16 instructions per triangle).
-            const VecI cx = hn::ShiftLeft<kSubPixelBits>(bx0);
-            const VecI cy = hn::ShiftLeft<kSubPixelBits>(by0);
+            // Stored at the triangle's place in the chunk, whole vectors (no compress:
+            // Highway's AVX2 compress copied a 1 KiB table per call, 16 instructions per
+            // triangle).
             const std::size_t at = first - chunk;
-            hn::StoreU(hn::Sub(x0, cx), d, out.x[0] + at);
-            hn::StoreU(hn::Sub(x1, cx), d, out.x[1] + at);
-            hn::StoreU(hn::Sub(x2, cx), d, out.x[2] + at);
-            hn::StoreU(hn::Sub(y0, cy), d, out.y[0] + at);
-            hn::StoreU(hn::Sub(y1, cy), d, out.y[1] + at);
-            hn::StoreU(hn::Sub(y2, cy), d, out.y[2] + at);
+            for (int i = 0; i < 3; ++i) {
+                hn::StoreU(xs[i], d, out.x[i] + at);
+                hn::StoreU(ys[i], d, out.y[i] + at);
+            }
             hn::StoreU(bx0, d, out.box[0] + at);
             hn::StoreU(by0, d, out.box[1] + at);
             hn::StoreU(bx1, d, out.box[2] + at);
