@@ -221,6 +221,9 @@ void setupLanes(const LaneInput& in, std::size_t first, std::size_t end, LaneChu
     const std::size_t n = hn::Lanes(Di());
     out.count = 0;
     out.trianglesIn = out.trianglesCulled = out.trianglesRasterized = 0;
+    // No clip positions: every index is invalid, and the gathers (of vertex 0 where invalid)
+    // would read outside the vertex pass's output.
+    if (in.vertices == 0) return;
     for (std::size_t t = first; t < end; t += n)
         setupVector(in, first, t, std::min(n, end - t), out);
 }
