@@ -51,22 +51,26 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return evalLanes(p, dx, hn::Set(Df(), dy));
 }
 
-/// lightIntensity() and shade() lane by lane: the same operations in the same order, the
-/// specular power by unitPowLanes(), as the scalar loop's unitPow().
+/// phongTerms().intensity and shade() lane by lane, `n` the interpolated normal: the same
+/// operations in the same order, the lengths by rsqrtLanes() and the specular power by
+/// unitPowLanes(), as the scalar loop's fastRsqrt() and unitPow().
 HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
                                 const DrawConstants& k) {
     const Df d;
     const FastLighting& f = k.lighting;
     auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
+    const VecF rn = inverseLengthLanes(n);
     const VecF lw = all(f.light.w);
     const Vec3Lanes toLight{all(f.light.x) - lw * p.x, all(f.light.y) - lw * p.y,
                             all(f.light.z) - lw * p.z};
-    const Vec3Lanes l = normalizeLanes(toLight);
-    const Vec3Lanes v =
-        normalizeLanes({all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z});
-    const Vec3Lanes h = normalizeLanes({l.x + v.x, l.y + v.y, l.z + v.z});
-    const VecF nl = dotLanes(n, l);
-    const VecF nh = clamp01Lanes(dotLanes(n, h));  // std::clamp(nh, 0, 1): the same for NaN too
+    const Vec3Lanes l = scaleLanes(toLight, inverseLengthLanes(toLight));
+    const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
+    const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
+    const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
+    const VecF rh = inverseLengthLanes(halfway);
+    const VecF nl = dotLanes(n, l) * rn;
+    // std::clamp(nh, 0, 1): the same for NaN too
+    const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
     const VecF specular = unitPowLanes(nh, f.shininess);
     const VecF lit = all(f.diffuse) * nl + all(f.specular) * specular;
     const VecF intensity = all(f.ambientTerm) + hn::IfThenElseZero(nl > hn::Zero(d), lit);
@@ -93,8 +97,7 @@ HWY_INLINE VecI colorLanes(const VecF* a, const DrawConstants& k) {
     if constexpr (L.color) rgb = {a[L.colorAt()], a[L.colorAt() + 1], a[L.colorAt() + 2]};
     if constexpr (L.phong) {
         const int ni = L.normalAt(), pi = L.positionAt();
-        const Vec3Lanes n = normalizeLanes({a[ni], a[ni + 1], a[ni + 2]});
-        rgb = lightLanes(rgb, {a[pi], a[pi + 1], a[pi + 2]}, n, k);
+        rgb = lightLanes(rgb, {a[pi], a[pi + 1], a[pi + 2]}, {a[ni], a[ni + 1], a[ni + 2]}, k);
     }
     return packColorLanes(rgb.x, rgb.y, rgb.z);
 }
@@ -382,10 +385,8 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
     if constexpr (!kMaskedRows || !kVectorColor<V> || kMinVectorLanes<V> != 1)
         hn::Store(laneOffset, di, pixelAt);
     std::size_t fragments = 0;
-    // Without varyings the colour is the same at every pixel: packed once per triangle.
-    [[maybe_unused]] VecI flat = hn::Zero(di);
-    if constexpr (kCount == 0 && kVectorColor<V>)
-        flat = hn::Set(di, static_cast<std::int32_t>(packColor(k.baseColor)));
+    // Without varyings the colour is the same at every pixel: packed once per draw.
+    const VecI flat = hn::Set(di, static_cast<std::int32_t>(k.basePacked));
 
     for (int by = 0; by < height; by += kBlockH) {
         const int y = setup.box.y0 + by;
