@@ -14,6 +14,7 @@
 // float operations in the same order as the scalar loop (scalar_loop.hpp), so both give the same
 // image bit for bit, on every target (fast_vs_reference, threads_test, simd_targets_test).
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -113,10 +114,14 @@ HWY_INLINE VecI vectorColorLanes(const VecF* a, const DrawConstants& k) {
 }
 
 /// How many live lanes make shading all lanes at once pay off: any for a plain colour (a few
-/// lane operations), half for Phong lighting and texture lookups, whose lanes are dear: below
-/// that the scalar code shades the live lanes cheaper.
+/// lane operations); two for Phong lighting, whose lanes cost about as many instructions as two
+/// scalar pixels (no sqrt or division since fastRsqrt(), and a scalar pixel is one long chain of
+/// dependent operations); half for texture lookups, whose lanes are dear: below that the scalar
+/// code shades the live lanes cheaper.
 template <class V>
-inline constexpr int kMinVectorLanes = kVectorColor<V> && !V::kLayout.phong ? 1 : (kLanes + 1) / 2;
+inline constexpr int kMinVectorLanes = !kVectorColor<V>   ? (kLanes + 1) / 2
+                                       : V::kLayout.phong ? std::min(2, kLanes)
+                                                          : 1;
 
 /// fragmentWeights() lane by lane for an affine or perspective variant: the weights (m1, m2) of
 /// vertices 1 and 2 at the lanes' pixels, `depth` = 1/q there.
