@@ -1,12 +1,17 @@
 // Phong's pow without libm (shading/unit_pow.hpp) against pow in double: its error in 8-bit
-// steps over x in [0, 1] and exponents up to 1000, and the special cases std::pow defines.
+// steps over x in [0, 1] and exponents up to 1000, and the special cases std::pow defines. Then
+// Phong's normalisations without sqrt or division (fastRsqrt, shading/fast_lighting.hpp).
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 
 #include <gtest/gtest.h>
 
+#include "shading/fast_lighting.hpp"
 #include "shading/unit_pow.hpp"
 
 namespace facet::detail {
@@ -54,6 +59,32 @@ TEST(UnitPow, SpecialCasesAsStdPow) {
     EXPECT_EQ(unitPow(0.25f, 0.5f), 0.5f);
     // Subnormal bases: scaled into range, not read as 2^-127.
     EXPECT_NEAR(unitPow(1e-40f, 0.01f), std::pow(1e-40, 0.01), 1e-6);
+}
+
+// Every 97th float from the smallest subnormal to the largest finite one, and every float in
+// [1, 4) (a whole cycle of the guess, which repeats per factor 4).
+TEST(FastRsqrt, WithinFiveMillionthsOfTheDoubleEverywhere) {
+    double worst = 0.0;
+    auto check = [&](float x) {
+        const double exact = 1.0 / std::sqrt(static_cast<double>(x));
+        const double error = std::fabs(static_cast<double>(fastRsqrt(x)) / exact - 1.0);
+        if (!(error <= worst)) worst = error;  // NaN counts
+    };
+    for (std::uint32_t bits = 1; bits < 0x7F800000u; bits += 97) check(std::bit_cast<float>(bits));
+    for (float x = 1.0f; x < 4.0f; x = std::nextafter(x, 4.0f)) check(x);
+    EXPECT_LT(worst, 5e-6);
+    std::printf("fastRsqrt: largest relative error %.2e\n", worst);
+}
+
+TEST(FastRsqrt, InverseLengthMakesUnitVectorsAndZeroOfZero) {
+    for (const glm::vec3 v : {glm::vec3(3.0f, 4.0f, 0.0f), glm::vec3(1e-20f, 0.0f, 0.0f),
+                              glm::vec3(-1e-3f, 2e-3f, 5.0f), glm::vec3(1e18f, -1e18f, 1e17f)}) {
+        const glm::vec3 n = v * inverseLength(v);
+        EXPECT_NEAR(glm::dot(n, n), 1.0f, 1e-5f) << v.x << " " << v.y << " " << v.z;
+        EXPECT_GT(glm::dot(n, v), 0.0f);
+    }
+    EXPECT_EQ(inverseLength(glm::vec3(0.0f)), 0.0f);
+    EXPECT_EQ(inverseLength(glm::vec3(std::nanf(""), 0.0f, 0.0f)), 0.0f);
 }
 
 }  // namespace

@@ -150,8 +150,8 @@ void shadeFragment(const Probe& pr, const Planes& p, SamplePixel& s, InspectedFr
         f.normal = vec3At(a, L.normalAt());
         f.position = vec3At(a, L.positionAt());
         f.lit = true;
-        const glm::vec3 n = normalizeOrZero(f.normal);
-        const LightTerms t = lightTerms(f.position, n, k.eye, k.lighting, UnitPow{});
+        const glm::vec3 n = f.normal * inverseLength(f.normal);  // as phongTerms() scales it
+        const LightTerms t = phongTerms(f.position, f.normal, k.eye, k.lighting, UnitPow{});
         const bool front = t.nl > 0.0f;  // the formula's rule: no light from behind
         f.lighting = {n,
                       t.l,

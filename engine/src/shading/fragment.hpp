@@ -38,12 +38,23 @@ inline const Texture& whiteTexture() {
     return white;
 }
 
+/// Rounds a colour to 8 bits per channel as spec §5 says; NaN becomes 0.
+inline std::uint32_t toByte(float c) {
+    const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+    return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
+}
+inline std::uint32_t packColor(const glm::vec3& c) {
+    return packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
+}
+
 /// What every fragment of a draw shares.
 struct DrawConstants {
     const Texture* texture = nullptr;  ///< never null inside the stage (white when none)
     FastLighting lighting;
     glm::vec3 eye{0.0f};
     glm::vec3 baseColor{1.0f};  ///< the colour when the layout has none (white; red for normals)
+    /// baseColor packed, once per draw: the colour of every pixel of a variant without varyings.
+    std::uint32_t basePacked = packColor(baseColor);
 };
 
 /// What a variant's triangle rasterizer needs besides the triangle; shared, read-only, by the
@@ -57,15 +68,6 @@ struct RasterContext {
     /// The variant's block loop (small triangles) for the same target; null: scalar only.
     RasterizeFn blocks = nullptr;
 };
-
-/// Rounds a colour to 8 bits per channel as spec §5 says; NaN becomes 0.
-inline std::uint32_t toByte(float c) {
-    const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
-    return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
-}
-inline std::uint32_t packColor(const glm::vec3& c) {
-    return packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
-}
 
 /// True when the shader tests and writes depth (LESS).
 constexpr bool depthTested(ShaderKind s) {
@@ -102,17 +104,17 @@ struct UnitPow {
 };
 
 /// The colour of a fragment from its interpolated varyings (spec §6, §7): vertex or
-/// Gouraud colour as interpolated; Phong lights the renormalised normal here; the texture
-/// shader returns the texel, times that colour with "combine".
+/// Gouraud colour as interpolated; Phong lights the interpolated normal here (phongTerms()); the
+/// texture shader returns the texel, times that colour with "combine".
 template <class V>
 inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k, float lod) {
     constexpr VaryingLayout L = V::kLayout;
     glm::vec3 rgb = k.baseColor;
     if constexpr (L.color) rgb = vec3At(a, L.colorAt());
     if constexpr (L.phong) {
-        const glm::vec3 n = normalizeOrZero(vec3At(a, L.normalAt()));
-        rgb =
-            shade(rgb, lightIntensity(vec3At(a, L.positionAt()), n, k.eye, k.lighting, UnitPow{}));
+        const LightTerms t = phongTerms(vec3At(a, L.positionAt()), vec3At(a, L.normalAt()), k.eye,
+                                        k.lighting, UnitPow{});
+        rgb = shade(rgb, t.intensity);
     }
     if constexpr (V::kShader == ShaderKind::Texture) {
         const glm::vec3 texel =

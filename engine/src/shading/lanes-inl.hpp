@@ -9,6 +9,8 @@
 
 #include <cstdint>
 
+#include "shading/fast_lighting.hpp"
+
 #if defined(FACET_SHADING_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACET_SHADING_LANES_INL_H_
 #undef FACET_SHADING_LANES_INL_H_
@@ -73,13 +75,31 @@ HWY_INLINE VecF dotLanes(const Vec3Lanes& a, const Vec3Lanes& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;  // glm::dot's order: (x + y) + z
 }
 
-/// normalizeOrZero() lane by lane (sqrt correctly rounded, like std::sqrt).
-HWY_INLINE Vec3Lanes normalizeLanes(const Vec3Lanes& v) {
+/// fastRsqrt() lane by lane: the same integer guess and Newton steps in the same order, so the
+/// same float on every target (not hn::ApproximateReciprocalSqrt, whose guess differs between
+/// targets: 12 bits with SSE4 and AVX2, 14 with AVX-512).
+HWY_INLINE VecF rsqrtLanes(VecF x) {
     const Df d;
+    const Di di;
+    const MaskF tiny = x < hn::Set(d, kRsqrtMinNormal);
+    const VecF xs = hn::IfThenElse(tiny, x * hn::Set(d, kRsqrtScaleUp), x);
+    const VecF half = hn::Set(d, 0.5f) * xs;
+    const VecF threeHalves = hn::Set(d, 1.5f);
+    VecF y = hn::BitCast(d, hn::Set(di, kRsqrtGuess) - hn::ShiftRight<1>(hn::BitCast(di, xs)));
+    y = y * (threeHalves - half * y * y);
+    y = y * (threeHalves - half * y * y);
+    return hn::IfThenElse(tiny, y * hn::Set(d, kRsqrtScaleBack), y);
+}
+
+/// inverseLength() lane by lane.
+HWY_INLINE VecF inverseLengthLanes(const Vec3Lanes& v) {
     const VecF length2 = dotLanes(v, v);
-    const VecF inv = hn::Set(d, 1.0f) / hn::Sqrt(length2);
-    const VecF scale = hn::IfThenElseZero(length2 > hn::Zero(d), inv);
-    return {v.x * scale, v.y * scale, v.z * scale};
+    return hn::IfThenElseZero(length2 > hn::Zero(Df()), rsqrtLanes(length2));
+}
+
+/// v · s lane by lane.
+HWY_INLINE Vec3Lanes scaleLanes(const Vec3Lanes& v, VecF s) {
+    return {v.x * s, v.y * s, v.z * s};
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE

@@ -14,6 +14,7 @@
 // float operations in the same order as the scalar loop (scalar_loop.hpp), so both give the same
 // image bit for bit, on every target (fast_vs_reference, threads_test, simd_targets_test).
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -51,22 +52,26 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return evalLanes(p, dx, hn::Set(Df(), dy));
 }
 
-/// lightIntensity() and shade() lane by lane: the same operations in the same order, the
-/// specular power by unitPowLanes(), as the scalar loop's unitPow().
+/// phongTerms().intensity and shade() lane by lane, `n` the interpolated normal: the same
+/// operations in the same order, the lengths by rsqrtLanes() and the specular power by
+/// unitPowLanes(), as the scalar loop's fastRsqrt() and unitPow().
 HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
                                 const DrawConstants& k) {
     const Df d;
     const FastLighting& f = k.lighting;
     auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
+    const VecF rn = inverseLengthLanes(n);
     const VecF lw = all(f.light.w);
     const Vec3Lanes toLight{all(f.light.x) - lw * p.x, all(f.light.y) - lw * p.y,
                             all(f.light.z) - lw * p.z};
-    const Vec3Lanes l = normalizeLanes(toLight);
-    const Vec3Lanes v =
-        normalizeLanes({all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z});
-    const Vec3Lanes h = normalizeLanes({l.x + v.x, l.y + v.y, l.z + v.z});
-    const VecF nl = dotLanes(n, l);
-    const VecF nh = clamp01Lanes(dotLanes(n, h));  // std::clamp(nh, 0, 1): the same for NaN too
+    const Vec3Lanes l = scaleLanes(toLight, inverseLengthLanes(toLight));
+    const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
+    const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
+    const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
+    const VecF rh = inverseLengthLanes(halfway);
+    const VecF nl = dotLanes(n, l) * rn;
+    // std::clamp(nh, 0, 1): the same for NaN too
+    const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
     const VecF specular = unitPowLanes(nh, f.shininess);
     const VecF lit = all(f.diffuse) * nl + all(f.specular) * specular;
     const VecF intensity = all(f.ambientTerm) + hn::IfThenElseZero(nl > hn::Zero(d), lit);
@@ -93,8 +98,7 @@ HWY_INLINE VecI colorLanes(const VecF* a, const DrawConstants& k) {
     if constexpr (L.color) rgb = {a[L.colorAt()], a[L.colorAt() + 1], a[L.colorAt() + 2]};
     if constexpr (L.phong) {
         const int ni = L.normalAt(), pi = L.positionAt();
-        const Vec3Lanes n = normalizeLanes({a[ni], a[ni + 1], a[ni + 2]});
-        rgb = lightLanes(rgb, {a[pi], a[pi + 1], a[pi + 2]}, n, k);
+        rgb = lightLanes(rgb, {a[pi], a[pi + 1], a[pi + 2]}, {a[ni], a[ni + 1], a[ni + 2]}, k);
     }
     return packColorLanes(rgb.x, rgb.y, rgb.z);
 }
@@ -110,10 +114,14 @@ HWY_INLINE VecI vectorColorLanes(const VecF* a, const DrawConstants& k) {
 }
 
 /// How many live lanes make shading all lanes at once pay off: any for a plain colour (a few
-/// lane operations), half for Phong lighting and texture lookups, whose lanes are dear: below
-/// that the scalar code shades the live lanes cheaper.
+/// lane operations); two for Phong lighting, whose lanes cost about as many instructions as two
+/// scalar pixels (no sqrt or division since fastRsqrt(), and a scalar pixel is one long chain of
+/// dependent operations); half for texture lookups, whose lanes are dear: below that the scalar
+/// code shades the live lanes cheaper.
 template <class V>
-inline constexpr int kMinVectorLanes = kVectorColor<V> && !V::kLayout.phong ? 1 : (kLanes + 1) / 2;
+inline constexpr int kMinVectorLanes = !kVectorColor<V>   ? (kLanes + 1) / 2
+                                       : V::kLayout.phong ? std::min(2, kLanes)
+                                                          : 1;
 
 /// fragmentWeights() lane by lane for an affine or perspective variant: the weights (m1, m2) of
 /// vertices 1 and 2 at the lanes' pixels, `depth` = 1/q there.
@@ -241,31 +249,21 @@ inline constexpr int kBlockH = kLanes / kBlockW;
 inline constexpr int kBlockShift = std::countr_zero(static_cast<unsigned>(kBlockW));
 static_assert(kBlockH <= kMaxBlockSide && kLanes <= 16, "a block fits in laneBits()' 16 bits");
 
-/// The lanes of a block's first `columns` columns and first `rows` rows: the block's part that
-/// lies in the box.
-inline unsigned blockLanes(int columns, int rows) {
-    unsigned row = (1u << columns) - 1u, bits = 0;
-    for (int r = 0; r < rows; ++r) bits |= row << (r * kBlockW);
-    return bits;
-}
-
-/// Lane i's pixel in a block, from the block's first pixel in a framebuffer `width` wide.
-inline std::size_t blockPixel(int i, int width) {
-    return static_cast<std::size_t>(i >> kBlockShift) * static_cast<std::size_t>(width) +
-           static_cast<std::size_t>(i & (kBlockW - 1));
-}
-
 /// The depths stored at a block's pixels, from its first pixel `first` in a framebuffer `width`
-/// wide; lane i's pixel is offsets[i] = blockPixel(i, width) past it. Only the `covered` lanes'
-/// values matter, and only pixels in the box (the first `columns` of each row) are read: the rest
-/// may be another thread's tile, or past the frame. A one-row block is a plain load; a 4×4 block
-/// on a target whose masked loads touch no masked-off memory (AVX-512) is four masked row loads;
-/// other blocks gather, with every lane outside the triangle reading its first covered pixel
-/// instead of its own. (A copy through the stack would stall on store forwarding.)
-HWY_INLINE VecF blockDepths(const float* first, int width, VecI offsets, unsigned covered,
-                            int columns, [[maybe_unused]] int rows) {
+/// wide; lane i's pixel is offsets[i] (its row times `width`, plus its column) past it. Only the
+/// `covered` lanes' values matter (bit i: lane i; `outside` is set on the other lanes), and only
+/// pixels in the box may be read: the rest may be another thread's tile, or past the frame. A
+/// one-row block is a plain load; a 4×4 block on a target whose masked loads touch no masked-off
+/// memory (AVX-512) is four masked row loads of the covered lanes; other blocks gather, every lane
+/// outside the triangle reading the block's first pixel (in the box) instead of its own. (A copy
+/// through the stack would stall on store forwarding.)
+HWY_INLINE VecF blockDepths(const float* first, [[maybe_unused]] int width,
+                            [[maybe_unused]] VecI offsets, [[maybe_unused]] hn::Mask<Di> outside,
+                            unsigned covered) {
     const Df d;
     if constexpr (kBlockH == 1) {
+        // Covered lanes lie in the box, which starts at lane 0: read up to the last of them.
+        const int columns = std::bit_width(covered);
         if (columns == kBlockW) return hn::LoadU(d, first);
         HWY_ALIGN float part[kLanes] = {};
         std::memcpy(part, first, sizeof(float) * static_cast<std::size_t>(columns));
@@ -275,22 +273,17 @@ HWY_INLINE VecF blockDepths(const float* first, int width, VecI offsets, unsigne
     else if constexpr (kBlockW == 4 && kBlockH == 4) {
         const hn::Full128<float> d4;
         const hn::Half<Df> d8;
-        const auto inRow = hn::FirstN(d4, static_cast<std::size_t>(columns));
         const auto row = [&](int r) HWY_ATTR {
-            return r < rows ? hn::MaskedLoad(inRow, d4,
-                                             first + static_cast<std::size_t>(r) *
-                                                         static_cast<std::size_t>(width))
-                            : hn::Zero(d4);
+            const std::uint8_t bits[8] = {static_cast<std::uint8_t>(covered >> (4 * r) & 0xFu)};
+            return hn::MaskedLoad(
+                hn::LoadMaskBits(d4, bits), d4,
+                first + static_cast<std::size_t>(r) * static_cast<std::size_t>(width));
         };
         return hn::Combine(d, hn::Combine(d8, row(3), row(2)), hn::Combine(d8, row(1), row(0)));
     }
 #endif
     else {
-        const std::uint8_t bits[8] = {static_cast<std::uint8_t>(covered),
-                                      static_cast<std::uint8_t>(covered >> 8)};
-        const hn::Mask<Di> live = hn::RebindMask(Di(), hn::LoadMaskBits(d, bits));
-        const auto safe = static_cast<std::int32_t>(blockPixel(std::countr_zero(covered), width));
-        return hn::GatherIndex(d, first, hn::IfThenElse(live, offsets, hn::Set(Di(), safe)));
+        return hn::GatherIndex(d, first, hn::IfThenZeroElse(outside, offsets));
     }
 }
 
@@ -337,6 +330,13 @@ HWY_INLINE void storeBlockRows([[maybe_unused]] VecF depth, [[maybe_unused]] Vec
 /// The triangle loop of an affine or perspective variant V without derivatives, for narrow boxes
 /// that fitsBlockLoop(): 2D blocks of pixels, one lane each. Coverage is forEachCovered()'s
 /// test, E ≥ 0 on all three edges (the top-left bias is in e0), done per lane in 32 bits.
+///
+/// A dense mesh's triangle covers a few pixels in two or three blocks, so what is paid per
+/// triangle and per block counts as much as what is paid per pixel: the lanes' edge values are
+/// set up once and stepped by vector adds; the box's right and bottom limits are two more
+/// "edges" stepped the same way, so that a block's covered lanes are one OR of five vectors and
+/// an empty block is skipped after it; depth steps dx instead of converting it per block, and
+/// reuses the row's q₂·dy.
 template <class V>
 HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& setup,
                                          const Planes& p) {
@@ -347,65 +347,93 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
+    constexpr unsigned kAll = (1u << kLanes) - 1u;
 
     // Each lane's pixel (ox, oy) within the block, its place in the framebuffer and its edge
-    // values relative to the block's first pixel: all exact (fitsBlockLoop() bounds the
-    // integers, and small integers are exact floats), so a lane's dx and dy are the scalar
-    // loop's. Computed in lanes: a table written lane by lane and read back as a vector would
-    // stall on store forwarding, once per triangle.
+    // values at the box's first block: all exact (fitsBlockLoop() bounds the integers, and small
+    // integers are exact floats), so a lane's dx and dy are the scalar loop's. Computed in lanes:
+    // a table written lane by lane and read back as a vector would stall on store forwarding,
+    // once per triangle.
     const VecI lane = hn::Iota(di, 0);
     const VecI ox = hn::And(lane, hn::Set(di, kBlockW - 1));
     const VecI oy = hn::ShiftRight<kBlockShift>(lane);
-    const VecF offsetX = hn::ConvertTo(d, ox), offsetY = hn::ConvertTo(d, oy);
+    const VecF offsetY = hn::ConvertTo(d, oy);
     const VecI laneOffset = oy * hn::Set(di, fb.width) + ox;
-    const auto edgeOffsets = [&](int i) HWY_ATTR {
-        return ox * hn::Set(di, static_cast<std::int32_t>(setup.stepX[i])) +
-               oy * hn::Set(di, static_cast<std::int32_t>(setup.stepY[i]));
+    const auto i32 = [](std::int64_t v) { return static_cast<std::int32_t>(v); };
+    const auto edgeStart = [&](int i) HWY_ATTR {
+        return hn::Set(di, i32(setup.e0[i])) + ox * hn::Set(di, i32(setup.stepX[i])) +
+               oy * hn::Set(di, i32(setup.stepY[i]));
     };
-    const VecI edge0 = edgeOffsets(0), edge1 = edgeOffsets(1), edge2 = edgeOffsets(2);
+    VecI row0 = edgeStart(0), row1 = edgeStart(1), row2 = edgeStart(2);
+    const VecI blockX0 = hn::Set(di, i32(kBlockW * setup.stepX[0]));
+    const VecI blockX1 = hn::Set(di, i32(kBlockW * setup.stepX[1]));
+    const VecI blockX2 = hn::Set(di, i32(kBlockW * setup.stepX[2]));
+    const VecI blockY0 = hn::Set(di, i32(kBlockH * setup.stepY[0]));
+    const VecI blockY1 = hn::Set(di, i32(kBlockH * setup.stepY[1]));
+    const VecI blockY2 = hn::Set(di, i32(kBlockH * setup.stepY[2]));
     const int width = setup.box.x1 - setup.box.x0 + 1;
     const int height = setup.box.y1 - setup.box.y0 + 1;
+    // The box as two more edges, ≥ 0 on the lanes inside it: columns left of the box's last one,
+    // rows above its last row. Lanes past the box (a block sticking out of it) may be in another
+    // thread's tile or past the frame.
+    const VecI boxStart = hn::Set(di, width - 1) - ox;
+    VecI boxRow = hn::Set(di, height - 1) - oy;
+    const VecI boxStepX = hn::Set(di, kBlockW);
+    const VecI boxStepY = hn::Set(di, kBlockH);
+    const VecF dxStart = hn::Set(d, static_cast<float>(setup.box.x0 - p.baseX)) +
+                         hn::ConvertTo(d, ox);  // exact below 2^24
+    const VecF dxStep = hn::Set(d, static_cast<float>(kBlockW));
+    const VecF q0 = hn::Set(d, p.q[0]), q1 = hn::Set(d, p.q[1]), q2 = hn::Set(d, p.q[2]);
+    const VecF one = hn::Set(d, 1.0f);
+    [[maybe_unused]] HWY_ALIGN std::int32_t
+        pixelAt[kLanes];  // laneOffset, for the lane-by-lane stores
+    if constexpr (!kMaskedRows || !kVectorColor<V> || kMinVectorLanes<V> != 1)
+        hn::Store(laneOffset, di, pixelAt);
     std::size_t fragments = 0;
-    // Without varyings the colour is the same at every pixel: packed once per triangle.
-    VecI flat = hn::Zero(di);
-    if constexpr (kCount == 0 && kVectorColor<V>) flat = colorLanes<V>(nullptr, k);
+    // Without varyings the colour is the same at every pixel: packed once per draw.
+    const VecI flat = hn::Set(di, static_cast<std::int32_t>(k.basePacked));
 
-    std::int64_t blockRow[3] = {setup.e0[0], setup.e0[1], setup.e0[2]};
     for (int by = 0; by < height; by += kBlockH) {
         const int y = setup.box.y0 + by;
-        const int rows = std::min(kBlockH, height - by);
         const VecF dy = hn::Set(d, static_cast<float>(y - p.baseY)) + offsetY;
-        std::int64_t e[3] = {blockRow[0], blockRow[1], blockRow[2]};
-        for (int i = 0; i < 3; ++i) blockRow[i] += kBlockH * setup.stepY[i];
+        const VecF qy = q2 * dy;  // evalLanes()' last term, the same for the whole row
+        VecI e0 = row0, e1 = row1, e2 = row2, boxColumn = boxStart;
+        VecF dx = dxStart;
+        row0 = row0 + blockY0;
+        row1 = row1 + blockY1;
+        row2 = row2 + blockY2;
+        const VecI boxRowHere = boxRow;
+        boxRow = boxRow - boxStepY;
+        float* zrow = fb.depth.data() + fb.index(setup.box.x0, y);
+        std::uint32_t* crow = fb.color.data() + fb.index(setup.box.x0, y);
 
-        for (int bx = 0; bx < width; bx += kBlockW) {
-            const int columns = std::min(kBlockW, width - bx);
-            // Negative on some edge: outside (the sign bit of the OR of the three).
-            const VecI outside = (hn::Set(di, static_cast<std::int32_t>(e[0])) + edge0) |
-                                 (hn::Set(di, static_cast<std::int32_t>(e[1])) + edge1) |
-                                 (hn::Set(di, static_cast<std::int32_t>(e[2])) + edge2);
-            for (int i = 0; i < 3; ++i) e[i] += kBlockW * setup.stepX[i];
-            const unsigned covered =
-                blockLanes(columns, rows) & ~laneBits(hn::RebindMask(d, outside < hn::Zero(di)));
+        for (int bx = 0; bx < width; bx += kBlockW, dx = dx + dxStep) {
+            // Negative on some edge (the sign bit of the OR): outside the triangle or the box.
+            const VecI outsideBits = e0 | e1 | e2 | boxColumn | boxRowHere;
+            e0 = e0 + blockX0;
+            e1 = e1 + blockX1;
+            e2 = e2 + blockX2;
+            boxColumn = boxColumn - boxStepX;
+            const hn::Mask<Di> outside = outsideBits < hn::Zero(di);
+            const unsigned covered = kAll & ~laneBits(hn::RebindMask(d, outside));
             if (covered == 0) continue;
             fragments += static_cast<std::size_t>(std::popcount(covered));
 
-            const int x = setup.box.x0 + bx;
-            const VecF dx = hn::Set(d, static_cast<float>(x - p.baseX)) + offsetX;
-            const VecF depth = hn::Set(d, 1.0f) / evalLanes(p.q, dx, dy);
-            const std::size_t first = fb.index(x, y);
-            float* zblock = fb.depth.data() + first;
+            // evalLanes(p.q, dx, dy), its row term hoisted: the same operations in the same
+            // order.
+            const VecF depth = one / (q0 + q1 * dx + qy);
+            float* zblock = zrow + bx;
             unsigned pass = covered;
             if constexpr (depthTested(V::kShader)) {
-                pass &= laneBits(depth <
-                                 blockDepths(zblock, fb.width, laneOffset, covered, columns, rows));
+                pass &=
+                    laneBits(depth < blockDepths(zblock, fb.width, laneOffset, outside, covered));
                 if (pass == 0) continue;
             }
             VecF m1, m2;
             weightLanes<V>(p, dx, dy, depth, m1, m2);
             VecF a[kCount > 0 ? kCount : 1];
             varyingLanes<V>(p, m1, m2, a);
-            std::uint32_t* cblock = fb.color.data() + first;
+            std::uint32_t* cblock = crow + bx;
             if constexpr (kMaskedRows && kVectorColor<V> && kMinVectorLanes<V> == 1) {
                 // Every block is shaded all lanes at once: the colours stay in a vector.
                 storeBlockRows<V>(depth, kCount == 0 ? flat : colorLanes<V>(a, k), pass, zblock,
@@ -414,11 +442,14 @@ HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& set
             }
             HWY_ALIGN std::uint32_t colors[kLanes];
             HWY_ALIGN float depths[kLanes];
-            shadeLanes<V>(a, k, pass, colors);
+            if constexpr (kCount == 0 && kVectorColor<V>)
+                hn::Store(hn::BitCast(Du(), flat), Du(), colors);
+            else
+                shadeLanes<V>(a, k, pass, colors);
             hn::Store(depth, d, depths);
             for (unsigned rest = pass; rest != 0; rest &= rest - 1) {
                 const int i = std::countr_zero(rest);
-                const std::size_t at = blockPixel(i, fb.width);
+                const auto at = static_cast<std::size_t>(pixelAt[i]);
                 if constexpr (depthTested(V::kShader)) zblock[at] = depths[i];
                 if constexpr (V::kShader != ShaderKind::Depth) cblock[at] = colors[i];
             }
