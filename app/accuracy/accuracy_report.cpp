@@ -271,7 +271,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                          "set logscale xy\n"
                          "set xlabel 'engine time per frame, median (ms, log scale)'\n"
                          "set ylabel 'RMSE against the ground truth (8-bit steps, log scale)'\n"
-                         "set key bottom left box opaque\n"
+                         "set key below horizontal\n"
                          "set grid\n";
     // Dark colours that read on white (gnuplot's sixth default is a pale yellow).
     const char* const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b",
@@ -286,7 +286,8 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                   " using 1:($3 > 0 ? $2 : 1/0) with points pt 7 ps 1.3 lc " + c +
                   " title 'on the front', datafile index " + std::to_string(2 * i) +
                   " using 1:($3 > 0 ? 1/0 : $2) with points pt 6 ps 1.3 lc " + c +
-                  " title 'beaten (slower and less accurate)'\n";
+                  " title 'beaten (another method as fast and more accurate, or faster and as "
+                  "accurate)'\n";
     }
     script += "unset multiplot\n";
     {
