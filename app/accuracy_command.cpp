@@ -117,10 +117,10 @@ int runAccuracy(const AccuracyOptions& o) {
         total += methods.back().size();
     }
     std::fprintf(stderr,
-                 "accuracy: %zu scenes, %zu methods against a %dx%d-sample truth; %d timed "
-                 "frames each after %d untimed; writing to %s\n",
-                 scenes.size(), total, o.samples, o.samples, o.frames, o.warmup,
-                 folder.value().c_str());
+                 "accuracy: %zu scene%s, %zu methods against a %dx%d-sample truth; %d timed "
+                 "frame%s each after %d untimed; writing to %s\n",
+                 scenes.size(), scenes.size() == 1 ? "" : "s", total, o.samples, o.samples,
+                 o.frames, o.frames == 1 ? "" : "s", o.warmup, folder.value().c_str());
     if (!leftOut.empty())
         std::fprintf(stderr,
                      "accuracy: not measured: %s (as many samples per pixel as the %dx%d truth or "

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "accuracy/accuracy_report.hpp"
 #include "accuracy/run_output.hpp"
 #include "accuracy/sweep_camera.hpp"
 #include "accuracy/sweep_depth.hpp"
@@ -99,6 +100,12 @@ int runSweeps(const SweepsOptions& o) {
     so.quick = o.quick;
     so.samples = o.samples;
     so.frames = o.frames;
+    const bool busy = machineBusy(machine);
+    if (busy)
+        std::fprintf(stderr,
+                     "sweeps: warning: load average %s on %d cores: the times will be those of a "
+                     "busy machine (the CSV and charts say so)\n",
+                     machine.load.c_str(), machine.cores);
     std::fprintf(stderr, "sweeps: %zu sweep%s%s, writing to %s\n", sweeps.size(),
                  sweeps.size() == 1 ? "" : "s", o.quick ? " (quick)" : "", out.c_str());
     ProgressLine progress;
@@ -124,7 +131,8 @@ int runSweeps(const SweepsOptions& o) {
         const std::vector<std::string> notes = {
             "facet sweeps: " + table.title,
             machine.date + "; " + machine.cpu + ", " + std::to_string(machine.cores) + " cores; " +
-                machine.compiler + "; load average at start " + machine.load,
+                machine.compiler + "; load average at start " + machine.load +
+                (busy ? " (busy: times indicative only)" : " (idle)"),
             "ground truth " + std::to_string(o.samples) + "x" + std::to_string(o.samples) +
                 " samples; " + std::to_string(o.frames) + " timed frames per point" +
                 (o.quick ? "; quick" : "")};
@@ -144,7 +152,8 @@ int runSweeps(const SweepsOptions& o) {
         }
         const std::string png = (out / (table.name + ".png")).string();
         const std::string title = table.title + " (" + machine.cpu + ", load average " +
-                                  machine.load + " at start, " + machine.date + ")";
+                                  machine.load + " at start" + (busy ? ", BUSY" : "") + ", " +
+                                  machine.date + ")";
         if (Status st = runGnuplotScript(
                 o.gnuplot, {"-e",
                             "datafile=" + gpString(csv) + "; outfile=" + gpString(png) +

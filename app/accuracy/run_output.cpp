@@ -43,6 +43,8 @@ ProgressLine::ProgressLine(std::FILE* out, double logSeconds)
 
 void ProgressLine::update(const std::string& text, bool force) {
     if (interactive_) {
+        if (shown_ > 0 && text == last_) return;
+        last_ = text;
         // Padded over the previous line's tail, so a shorter line leaves no letters behind.
         const std::size_t pad = shown_ > text.size() ? shown_ - text.size() : 0;
         std::fprintf(out_, "\r%s%*s", text.c_str(), static_cast<int>(pad), "");

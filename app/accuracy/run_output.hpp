@@ -41,6 +41,7 @@ class ProgressLine {
     double logSeconds_;
     bool interactive_ = false;
     std::size_t shown_ = 0;  ///< length of the transient line on the terminal
+    std::string last_;       ///< the transient line shown, not written again unchanged
     std::chrono::steady_clock::time_point lastLog_{};
     bool loggedOnce_ = false;
 };
