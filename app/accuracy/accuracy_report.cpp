@@ -139,7 +139,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
     const auto err = [&](std::size_t k) { return std::max(results[k].error.rmse, kFloor); };
     // Label placement in graph coordinates (0…1 over the plot area) of a 760×560 panel with an
     // 8-point font: about this wide per character and this tall per line.
-    constexpr double kCharWidth = 0.0085, kLineHeight = 0.034, kGap = 0.012;
+    constexpr double kCharWidth = 0.0085, kLineHeight = 0.034, kGap = 0.012, kKeyBand = 0.07;
 
     // Per scene two data blocks for gnuplot's `index`: the points (front marked), the front.
     // Labels and their leader lines are `set label` / `set arrow` commands per panel.
@@ -155,8 +155,9 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
             eHi = std::max(eHi, err(k));
         }
         // Ranges with room around the points (and on the right for their labels).
-        const double x0 = std::log10(tLo) - 0.15, x1 = std::log10(tHi) + 0.7;
-        const double y0 = std::log10(eLo) - 0.25, y1 = std::log10(eHi) + 0.25;
+        const double x0 = std::log10(tLo) - 0.3, x1 = std::log10(tHi) + 0.7;
+        // Room above the highest point for the key, a band no point or label enters.
+        const double y0 = std::log10(eLo) - 0.25, y1 = std::log10(eHi) + 0.45;
         const auto gx = [&](double t) { return (std::log10(t) - x0) / (x1 - x0); };
         const auto gy = [&](double e) { return (std::log10(e) - y0) / (y1 - y0); };
         std::string setup =
@@ -203,7 +204,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
         // another, or a point.
         std::sort(labels.begin(), labels.end(),
                   [&](const Label& a, const Label& b) { return err(a.at) > err(b.at); });
-        std::vector<Box> taken;
+        std::vector<Box> taken = {{0.0, 1.0 - kKeyBand, 1.0, 1.0}};
         for (const std::size_t k : rows) {
             const double px = gx(results[k].times.median), py = gy(err(k));
             taken.push_back({px - 0.008, py - 0.012, px + 0.008, py + 0.012});
@@ -271,7 +272,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                          "set logscale xy\n"
                          "set xlabel 'engine time per frame, median (ms, log scale)'\n"
                          "set ylabel 'RMSE against the ground truth (8-bit steps, log scale)'\n"
-                         "set key below horizontal\n"
+                         "set key top center horizontal\n"
                          "set grid\n";
     // Dark colours that read on white (gnuplot's sixth default is a pale yellow).
     const char* const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b",
@@ -286,8 +287,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                   " using 1:($3 > 0 ? $2 : 1/0) with points pt 7 ps 1.3 lc " + c +
                   " title 'on the front', datafile index " + std::to_string(2 * i) +
                   " using 1:($3 > 0 ? 1/0 : $2) with points pt 6 ps 1.3 lc " + c +
-                  " title 'beaten (another method as fast and more accurate, or faster and as "
-                  "accurate)'\n";
+                  " title 'beaten (off the front)'\n";
     }
     script += "unset multiplot\n";
     {
