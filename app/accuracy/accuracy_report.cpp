@@ -137,6 +137,8 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
     // method that draws the truth's image) is drawn at the axis' floor.
     constexpr double kFloor = 1e-3;
     const auto err = [&](std::size_t k) { return std::max(results[k].error.rmse, kFloor); };
+    // A time is never 0 (a clock tick at least), but a log axis must not meet one.
+    const auto ms = [&](std::size_t k) { return std::max(results[k].times.median, 1e-6); };
     // Label placement in graph coordinates (0…1 over the plot area) of a 760×560 panel with an
     // 8-point font: about this wide per character and this tall per line.
     constexpr double kCharWidth = 0.0085, kLineHeight = 0.034, kGap = 0.012, kKeyBand = 0.07;
@@ -147,10 +149,10 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
     std::vector<std::string> panelSetup;
     for (const std::string& s : scenes) {
         const std::vector<std::size_t>& rows = byScene[s];
-        double tLo = results[rows[0]].times.median, tHi = tLo, eLo = err(rows[0]), eHi = eLo;
+        double tLo = ms(rows[0]), tHi = tLo, eLo = err(rows[0]), eHi = eLo;
         for (const std::size_t k : rows) {
-            tLo = std::min(tLo, results[k].times.median);
-            tHi = std::max(tHi, results[k].times.median);
+            tLo = std::min(tLo, ms(k));
+            tHi = std::max(tHi, ms(k));
             eLo = std::min(eLo, err(k));
             eHi = std::max(eHi, err(k));
         }
@@ -166,17 +168,14 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
             "set xtics " + logTics(x0, x1) + "\nset ytics " + logTics(y0, y1) + "\n";
 
         for (const std::size_t k : rows)
-            data += fmt("%.6g ", results[k].times.median) + fmt("%.6g ", err(k)) +
-                    (front[k] ? "1\n" : "0\n");
+            data += fmt("%.6g ", ms(k)) + fmt("%.6g ", err(k)) + (front[k] ? "1\n" : "0\n");
         data += "\n\n";
         std::vector<std::size_t> frontRows;
         for (const std::size_t k : rows)
             if (front[k]) frontRows.push_back(k);
-        std::sort(frontRows.begin(), frontRows.end(), [&](std::size_t a, std::size_t b) {
-            return results[a].times.median < results[b].times.median;
-        });
-        for (const std::size_t k : frontRows)
-            data += fmt("%.6g ", results[k].times.median) + fmt("%.6g\n", err(k));
+        std::sort(frontRows.begin(), frontRows.end(),
+                  [&](std::size_t a, std::size_t b) { return ms(a) < ms(b); });
+        for (const std::size_t k : frontRows) data += fmt("%.6g ", ms(k)) + fmt("%.6g\n", err(k));
         data += "\n\n";
 
         // Methods whose points coincide on the chart (within 1 % of its width and height: often
@@ -189,8 +188,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
         std::vector<Label> labels;
         for (const std::size_t k : rows) {
             auto near = std::find_if(labels.begin(), labels.end(), [&](const Label& l) {
-                return std::abs(gx(results[k].times.median) - gx(results[l.at].times.median)) <
-                           0.01 &&
+                return std::abs(gx(ms(k)) - gx(ms(l.at))) < 0.01 &&
                        std::abs(gy(err(k)) - gy(err(l.at))) < 0.01;
             });
             if (near == labels.end())
@@ -199,19 +197,18 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                 near->text += ", " + results[k].method;
         }
         // Placed top to bottom, each beside its point when that is free, else at the nearest
-        // free height within reach (right of the point, or left where the right runs out of
-        // the plot), with a leader line from the point when it had to move: no label covers
-        // another, or a point.
+        // free height within reach, right of the point or else left of it, with a leader line
+        // from the point when it had to move: no label covers another, a point or the key.
         std::sort(labels.begin(), labels.end(),
                   [&](const Label& a, const Label& b) { return err(a.at) > err(b.at); });
         std::vector<Box> taken = {{0.0, 1.0 - kKeyBand, 1.0, 1.0}};
         for (const std::size_t k : rows) {
-            const double px = gx(results[k].times.median), py = gy(err(k));
+            const double px = gx(ms(k)), py = gy(err(k));
             taken.push_back({px - 0.008, py - 0.012, px + 0.008, py + 0.012});
         }
         int tag = 0;
         for (const Label& l : labels) {
-            const double px = gx(results[l.at].times.median), py = gy(err(l.at));
+            const double px = gx(ms(l.at)), py = gy(err(l.at));
             const double w = kCharWidth * static_cast<double>(l.text.size());
             Box placed{};
             bool found = false, left = false;
@@ -246,8 +243,7 @@ Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                      fmt(" at graph %.4f,", lx) + fmt(" graph %.4f ", ly) +
                      (left ? "right" : "left") + " font ',8' front\n";
             if (std::abs(ly - py) > 0.3 * kLineHeight)
-                setup += "set arrow " + std::to_string(tag) +
-                         fmt(" from first %.6g,", results[l.at].times.median) +
+                setup += "set arrow " + std::to_string(tag) + fmt(" from first %.6g,", ms(l.at)) +
                          fmt(" first %.6g", err(l.at)) +
                          fmt(" to graph %.4f,", left ? lx + 0.004 : lx - 0.004) +
                          fmt(" graph %.4f nohead lc rgb '#555555' lw 1\n", ly);
