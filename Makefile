@@ -99,14 +99,15 @@ bench-kernels: setup $(BUILD)/build.ninja
 	$(BUILD)/tests/kernels_bench $(BENCH_ARGS)
 
 # The speed-against-accuracy charts of issue 6, committed under docs/: `facet accuracy` on the
-# course scenes and Spot (docs/accuracy/), and every stability sweep (docs/sweeps/). About 2 min.
+# course scenes and Spot (docs/accuracy/), and every stability sweep (docs/sweeps/); named with
+# -o, since by default both write to a new folder. Run it on an idle machine: the charts carry
+# the load average and say when it was busy. A few minutes (docs/accuracy.md).
 SHARED ?= ../shared/data
 charts: build
 	$(BUILD)/app/facet accuracy $(SHARED)/course/example0.scene $(SHARED)/course/example1.scene \
 	  $(SHARED)/course/example2.scene $(SHARED)/course/example_textured.scene \
-	  $(SHARED)/scenes/spot_1280x720.scene --texture $(SHARED)/course/brick.jpg \
-	  --csv docs/accuracy/accuracy.csv --chart docs/accuracy/accuracy.png
-	$(BUILD)/app/facet sweeps --out docs/sweeps
+	  $(SHARED)/scenes/spot_1280x720.scene --texture $(SHARED)/course/brick.jpg -o docs/accuracy
+	$(BUILD)/app/facet sweeps -o docs/sweeps
 
 doc: setup
 	@command -v doxygen >/dev/null || bash scripts/setup-debian.sh doxygen

@@ -21,10 +21,10 @@ void addGlRenderCommand(CLI::App& app, int& exitCode);
 /// `facet bench [--threads N] [--csv F] [--chart F.png] [--scaling] [--quick] ...`.
 void addBenchCommand(CLI::App& app, int& exitCode);
 
-/// `facet accuracy SCENE... [--csv F] [--chart F.png] [--samples N] [--frames N]`.
+/// `facet accuracy SCENE... [-o DIR] [--samples N] [--frames N] [--quick] [--no-chart]`.
 void addAccuracyCommand(CLI::App& app, int& exitCode);
 
-/// `facet sweeps [--out DIR] [--only NAME,...] [--quick] [--no-chart]`: the stability sweeps.
+/// `facet sweeps [-o DIR] [--only NAME,...] [--quick] [--no-chart]`: the stability sweeps.
 void addSweepsCommand(CLI::App& app, int& exitCode);
 
 /// `facet inspect SCENE X Y [render options]`: one pixel's history, fragment by fragment.

@@ -1,10 +1,8 @@
 // `facet sweeps`: the stability sweeps of issue 6 as data and charts. Each sweep measures one
 // way a method fails (view angle, highlights, depth precision, sub-pixel precision, extreme
-// triangles, camera paths), writes <out>/<name>.csv and draws <out>/<name>.png with its
-// committed gnuplot script (scripts/sweep_<name>.gp). The tests assert bounds on the same
-// functions' results, so the charts show what the tests pin down.
-
-#include <unistd.h>
+// triangles, camera paths), writes <out>/<name>.csv (out: a new folder unless named) and draws
+// <out>/<name>.png with its committed gnuplot script (scripts/sweep_<name>.gp). The tests assert
+// bounds on the same functions' results, so the charts show what the tests pin down.
 
 #include <chrono>
 #include <cstdio>
@@ -14,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "accuracy/accuracy_report.hpp"
+#include "accuracy/run_output.hpp"
 #include "accuracy/sweep_camera.hpp"
 #include "accuracy/sweep_depth.hpp"
 #include "accuracy/sweep_extreme.hpp"
@@ -48,7 +48,7 @@ std::vector<Sweep> allSweeps() {
 }
 
 struct SweepsOptions {
-    std::string out = "docs/sweeps";
+    std::string out;  ///< the folder; empty: a new one in the current folder
     std::vector<std::string> only;
     std::string shared = FACET_SHARED_DIR;
     std::string gnuplot = "gnuplot";
@@ -88,42 +88,51 @@ int runSweeps(const SweepsOptions& o) {
             return kBadInput;
         }
     }
-    std::error_code ec;
-    fs::create_directories(o.out, ec);
-    if (ec || !fs::is_directory(o.out)) {
-        std::fprintf(stderr, "%s: cannot create the output folder (%s)\n", o.out.c_str(),
-                     ec.message().c_str());
+    const Result<std::string> folder = prepareOutputFolder(o.out, "facet-sweeps");
+    if (!folder) {
+        std::fprintf(stderr, "%s\n", folder.error().what().c_str());
         return kBadInput;
     }
+    const fs::path out(folder.value());
     const MachineInfo machine = collectMachineInfo();
     SweepOptions so;
     so.shared = o.shared;
     so.quick = o.quick;
     so.samples = o.samples;
     so.frames = o.frames;
-    const bool interactive = isatty(STDERR_FILENO) != 0;
+    const bool busy = machineBusy(machine);
+    if (busy)
+        std::fprintf(stderr,
+                     "sweeps: warning: load average %s on %d cores: the times will be those of a "
+                     "busy machine (the CSV and charts say so)\n",
+                     machine.load.c_str(), machine.cores);
+    std::fprintf(stderr, "sweeps: %zu sweep%s%s, writing to %s\n", sweeps.size(),
+                 sweeps.size() == 1 ? "" : "s", o.quick ? " (quick)" : "", out.c_str());
+    ProgressLine progress;
     int code = kOk;
     for (std::size_t k = 0; k < sweeps.size(); ++k) {
         const Sweep& sweep = sweeps[k];
         const auto start = std::chrono::steady_clock::now();
         int step = 0;
-        // On a terminal each step overwrites the line; in a log only the summary is kept.
+        // Every step on a terminal; in a log the first of each sweep and one every few seconds.
         so.progress = [&](const std::string& line) {
             ++step;
-            if (!interactive) return;
-            std::fprintf(stderr, "\r[%zu/%zu] %-70.70s", k + 1, sweeps.size(), line.c_str());
-            std::fflush(stderr);
+            char head[64];
+            std::snprintf(head, sizeof head, "[%zu/%zu] step %d (%.0f s): ", k + 1, sweeps.size(),
+                          step, secondsSince(start));
+            progress.update(head + line, step == 1);
         };
         const SweepTable table = sweep.run(so);
-        std::fprintf(stderr, "%s[%zu/%zu] %s: %d steps, %zu rows in %.1f s%s\n",
-                     interactive ? "\r" : "", k + 1, sweeps.size(), sweep.name, step,
-                     table.rows.size(), secondsSince(start),
-                     interactive ? "                                        " : "");
-        const std::string csv = (fs::path(o.out) / (table.name + ".csv")).string();
+        char summary[160];
+        std::snprintf(summary, sizeof summary, "[%zu/%zu] %s: %d steps, %zu rows in %.1f s", k + 1,
+                      sweeps.size(), sweep.name, step, table.rows.size(), secondsSince(start));
+        progress.finish(summary);
+        const std::string csv = (out / (table.name + ".csv")).string();
         const std::vector<std::string> notes = {
             "facet sweeps: " + table.title,
             machine.date + "; " + machine.cpu + ", " + std::to_string(machine.cores) + " cores; " +
-                machine.compiler,
+                machine.compiler + "; load average at start " + machine.load +
+                (busy ? " (busy: times indicative only)" : " (idle)"),
             "ground truth " + std::to_string(o.samples) + "x" + std::to_string(o.samples) +
                 " samples; " + std::to_string(o.frames) + " timed frames per point" +
                 (o.quick ? "; quick" : "")};
@@ -141,8 +150,10 @@ int runSweeps(const SweepsOptions& o) {
             code = kFailed;
             continue;
         }
-        const std::string png = (fs::path(o.out) / (table.name + ".png")).string();
-        const std::string title = table.title + " (" + machine.cpu + ", " + machine.date + ")";
+        const std::string png = (out / (table.name + ".png")).string();
+        const std::string title = table.title + " (" + machine.cpu + ", load average " +
+                                  machine.load + " at start" + (busy ? ", BUSY" : "") + ", " +
+                                  machine.date + ")";
         if (Status st = runGnuplotScript(
                 o.gnuplot, {"-e",
                             "datafile=" + gpString(csv) + "; outfile=" + gpString(png) +
@@ -166,21 +177,34 @@ void addSweepsCommand(CLI::App& app, int& exitCode) {
         "sweeps",
         "Run the stability sweeps (where each method fails) and chart them: one CSV and one PNG "
         "per sweep");
-    cmd->add_option("--out", o->out, "Folder for the CSV and PNG files")->capture_default_str();
+    cmd->add_option("-o,--out", o->out,
+                    "Folder for the CSV and PNG files (made if missing; files of the same names "
+                    "in it are replaced). Default: a new facet-sweeps-DATE-TIME folder here");
     cmd->add_option("--only", o->only, "Run only these sweeps (names as the files are named)")
         ->delimiter(',');
     cmd->add_option("--shared", o->shared, "The shared data folder (meshes, brick.jpg)")
         ->capture_default_str();
-    cmd->add_flag("--quick", o->quick, "Fewer, smaller steps (a smoke run)");
+    auto* quick = cmd->add_flag(
+        "--quick", o->quick,
+        "Fewer, smaller steps, a 2x2 truth and 1 timed frame (unless given): a smoke run of "
+        "seconds");
     cmd->add_flag("--no-chart", o->noChart, "Write the CSV files only");
-    cmd->add_option("--samples", o->samples, "Ground-truth samples per pixel axis (N×N)")
-        ->check(CLI::Range(1, 16))
-        ->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Timed frames per point (median)")
-        ->check(CLI::Range(1, 1000))
-        ->capture_default_str();
+    auto* samples =
+        cmd->add_option("--samples", o->samples, "Ground-truth samples per pixel axis (N×N)")
+            ->check(CLI::Range(1, 16))
+            ->capture_default_str();
+    auto* frames = cmd->add_option("--frames", o->frames, "Timed frames per point (median)")
+                       ->check(CLI::Range(1, 1000))
+                       ->capture_default_str();
     cmd->add_option("--gnuplot", o->gnuplot, "The gnuplot executable")->capture_default_str();
-    cmd->callback([o, &exitCode] { exitCode = runSweeps(*o); });
+    cmd->callback([o, &exitCode, quick, samples, frames] {
+        SweepsOptions run = *o;
+        if (quick->count() > 0) {
+            if (samples->count() == 0) run.samples = 2;
+            if (frames->count() == 0) run.frames = 1;
+        }
+        exitCode = runSweeps(run);
+    });
 }
 
 }  // namespace facet::app

@@ -461,56 +461,6 @@ TEST_F(Cli, BenchBadFiltersAreBadInput) {
     }
 }
 
-// facet accuracy on the course's brick wall: one CSV row per method (5 interpolations, 3
-// filters, 2 lightings, 3 samplings), `#` header lines, perspective no worse than affine and
-// 4×4 supersampling no worse than one sample.
-TEST_F(Cli, AccuracyWritesOneRowPerMethodAndPerspectiveBeatsAffine) {
-    const std::string course = facet::test::sharedData("course/");
-    REQUIRE_SHARED_DATA(course + "brick.jpg");
-    const Outcome r = run("accuracy " + course + "example_textured.scene --texture " + course +
-                          "brick.jpg --samples 2 --frames 1 --warmup 0 --csv " + out("a.csv"));
-    ASSERT_EQ(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find("[16/16] example_textured samples msaa8:"), std::string::npos) << r.out;
-    std::ifstream csv(out("a.csv"));
-    std::string line;
-    int comments = 0;
-    std::vector<std::vector<std::string>> rows;
-    while (std::getline(csv, line)) {
-        if (line.rfind("#", 0) == 0) {
-            ++comments;
-            continue;
-        }
-        std::vector<std::string> cells;
-        std::stringstream ss(line);
-        for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
-        rows.push_back(cells);
-    }
-    EXPECT_GE(comments, 3);
-    ASSERT_EQ(rows.size(), 17u);  // header + 16 methods
-    ASSERT_EQ(rows[0].size(), 14u);
-    EXPECT_EQ(rows[0][9], "rmse");
-    double affine = -1.0, perspective = -1.0, one = -1.0, sixteen = -1.0, msaa4 = -1.0;
-    for (std::size_t k = 1; k < rows.size(); ++k) {
-        ASSERT_EQ(rows[k].size(), 14u) << k;
-        EXPECT_EQ(rows[k][0], "example_textured");
-        EXPECT_EQ(rows[k][3], "512");
-        EXPECT_GT(std::stod(rows[k][6]), 0.0);  // median ms
-        if (rows[k][2] == "affine") affine = std::stod(rows[k][9]);
-        if (rows[k][2] == "perspective") perspective = std::stod(rows[k][9]);
-        if (rows[k][2] == "1x1") one = std::stod(rows[k][9]);
-        if (rows[k][2] == "4x4") sixteen = std::stod(rows[k][9]);
-        if (rows[k][2] == "msaa4") msaa4 = std::stod(rows[k][9]);
-    }
-    ASSERT_GE(affine, 0.0);
-    ASSERT_GE(perspective, 0.0);
-    EXPECT_LE(perspective, affine);
-    ASSERT_GE(one, 0.0);
-    ASSERT_GE(sixteen, 0.0);
-    EXPECT_LT(sixteen, one);
-    ASSERT_GE(msaa4, 0.0);
-    EXPECT_LT(msaa4, one);
-}
-
 TEST_F(Cli, AccuracyBadInputIsOneLine) {
     for (const std::string& args :
          {"accuracy " + out("missing.scene"),

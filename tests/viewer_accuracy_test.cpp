@@ -225,14 +225,14 @@ TEST(AccuracyJob, TheTruthIsFinerThanEveryMethodInTheTable) {
     const Scene scene = tiltedQuad(64, 48);
     const std::vector<app::AccuracyMethod> all = app::accuracyMethods(scene, textured());
     std::string leftOut;
-    std::vector<app::AccuracyMethod> kept = methodsBelowTruth(all, 4, &leftOut);
+    std::vector<app::AccuracyMethod> kept = app::methodsBelowTruth(all, 4, &leftOut);
     EXPECT_EQ(kept.size(), all.size() - 1);
     EXPECT_EQ(leftOut, "4x4");
     for (const app::AccuracyMethod& m : kept) EXPECT_LT(m.settings.supersample, 4) << m.name;
-    kept = methodsBelowTruth(all, 2, &leftOut);
+    kept = app::methodsBelowTruth(all, 2, &leftOut);
     // A 2x2 truth has 4 samples per pixel: MSAA 4x and 8x are not below it.
     EXPECT_EQ(leftOut, "2x2, 4x4, msaa4, msaa8");
-    EXPECT_EQ(methodsBelowTruth(all, 8, &leftOut).size(), all.size());
+    EXPECT_EQ(app::methodsBelowTruth(all, 8, &leftOut).size(), all.size());
     EXPECT_EQ(leftOut, "");
 
     // A 4x4 truth measures no 4x4 method: the row that was "best" against itself is gone, and

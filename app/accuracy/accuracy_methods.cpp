@@ -72,6 +72,40 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSett
     return methods;
 }
 
+std::vector<AccuracyMethod> methodsBelowTruth(const std::vector<AccuracyMethod>& methods,
+                                              int samples, std::string* leftOut) {
+    std::vector<AccuracyMethod> kept;
+    std::string out;
+    for (const AccuracyMethod& m : methods) {
+        const int perPixel = std::max(1, m.settings.supersample) *
+                             std::max(1, m.settings.supersample) * std::max(1, m.settings.msaa);
+        if (perPixel < samples * samples) {
+            kept.push_back(m);
+        } else {
+            if (!out.empty()) out += ", ";
+            out += m.name;
+        }
+    }
+    if (leftOut) *leftOut = out;
+    return kept;
+}
+
+std::vector<bool> onParetoFront(const std::vector<ParetoPoint>& points) {
+    std::vector<bool> front(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const ParetoPoint& r = points[k];
+        front[k] = std::none_of(points.begin(), points.end(), [&r](const ParetoPoint& o) {
+            // RMSEs this close are equally accurate: a last-digit difference between two
+            // renders is no accuracy anyone sees, and should not keep a slower method on.
+            const double tie = kParetoRmseTie * std::max(o.rmse, r.rmse);
+            const bool noWorse = o.ms <= r.ms && o.rmse <= r.rmse + tie;
+            const bool better = o.ms < r.ms || o.rmse < r.rmse - tie;
+            return noWorse && better;
+        });
+    }
+    return front;
+}
+
 std::vector<std::vector<double>> timeMethods(Renderer& renderer, const Scene& scene,
                                              const std::vector<AccuracyMethod>& methods, int frames,
                                              int warmup, Framebuffer& frame,

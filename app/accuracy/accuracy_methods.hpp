@@ -42,6 +42,28 @@ std::vector<AccuracyMethod> accuracyMethods(const Scene& scene);
 /// is this with baseSettings().
 std::vector<AccuracyMethod> accuracyMethods(const Scene& scene, const RenderSettings& base);
 
+/// The methods a ground truth of samples×samples per pixel can judge: those with fewer samples
+/// per pixel than it (N×N supersampled: N², multisampled: its count), coarser than the truth. A
+/// method as fine as the truth or finer would be measured against itself or against something
+/// coarser, and rank "better" than methods that are. The names of the others, comma separated,
+/// go to `leftOut`. `facet accuracy` and the viewer's Compare panel both measure only these.
+std::vector<AccuracyMethod> methodsBelowTruth(const std::vector<AccuracyMethod>& methods,
+                                              int samples, std::string* leftOut = nullptr);
+
+/// RMSEs within this share of each other count as equal on the Pareto front.
+inline constexpr double kParetoRmseTie = 1e-3;
+
+/// A measured point: median time and error.
+struct ParetoPoint {
+    double ms = 0.0;    ///< median frame time
+    double rmse = 0.0;  ///< error against the ground truth
+};
+
+/// Which points lie on the Pareto front of (time, RMSE): those no other point beats, at least as
+/// good on both and better on one (RMSEs within kParetoRmseTie being equal). The chart of
+/// `facet accuracy`, its CSV and the viewer's table mark the same ones.
+std::vector<bool> onParetoFront(const std::vector<ParetoPoint>& points);
+
 /// One method measured: the engine's median frame time and its error.
 struct AccuracyResult {
     std::string scene;  ///< the scene file's stem

@@ -10,16 +10,32 @@
 
 namespace facet::app {
 
-/// The results as an aligned text table, one row per scene × method ("RMSE in": interior RMSE).
+/// How a run measured, for the CSV's notes.
+struct AccuracyRun {
+    int samples = 0;      ///< ground truth per pixel axis
+    int frames = 0;       ///< timed frames per method
+    int warmup = 0;       ///< untimed frames per method first
+    bool quick = false;   ///< --quick: small images, few frames
+    std::string leftOut;  ///< methods not measured (methodsBelowTruth()), comma separated
+};
+
+/// Whether the machine was busy when the run started: a 1-minute load average above a quarter
+/// of its cores. Its times then say more about the other work than about the engine.
+bool machineBusy(const MachineInfo& machine);
+
+/// The results as an aligned text table, one row per scene × method ("RMSE in": interior RMSE,
+/// "front": * on the scene's Pareto front).
 std::string accuracyTable(const std::vector<AccuracyResult>& results);
 
-/// The CSV: `#` lines for the date, machine, samples and frames, a header, one row per result.
-Status writeAccuracyCsv(const std::string& path, const MachineInfo& machine, int samples,
+/// The CSV: `#` lines for the date, machine and its load, samples and frames, a header, one row
+/// per result (its last column 1 on the scene's Pareto front).
+Status writeAccuracyCsv(const std::string& path, const MachineInfo& machine, const AccuracyRun& run,
                         const std::vector<AccuracyResult>& results);
 
-/// The methods of each scene on the same axes: median ms (log) against RMSE in 8-bit steps, one
-/// labelled point per method, each scene's Pareto front (no other method both faster and more
-/// accurate) as a line. Runs gnuplot; an Error when it cannot.
+/// One panel per scene: median ms against RMSE in 8-bit steps, both on log axes, one point per
+/// method (filled on the Pareto front, onParetoFront(), drawn as a line), labels placed so none
+/// covers another (coinciding methods share one; a label moved off its point has a leader
+/// line). Runs gnuplot; an Error when it cannot.
 Status writeAccuracyChart(const std::string& path, const std::string& gnuplot,
                           const std::string& title, const std::vector<AccuracyResult>& results);
 

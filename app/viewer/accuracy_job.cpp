@@ -55,38 +55,11 @@ bool sameMethod(const RenderSettings& a, const RenderSettings& b) {
     return method(a) == method(b);
 }
 
-std::vector<app::AccuracyMethod> methodsBelowTruth(const std::vector<app::AccuracyMethod>& methods,
-                                                   int samples, std::string* leftOut) {
-    std::vector<app::AccuracyMethod> kept;
-    std::string out;
-    for (const app::AccuracyMethod& m : methods) {
-        // Below the truth: fewer samples per pixel, N×N or multisampled.
-        const int perPixel = std::max(1, m.settings.supersample) *
-                             std::max(1, m.settings.supersample) * std::max(1, m.settings.msaa);
-        if (perPixel < samples * samples) {
-            kept.push_back(m);
-        } else {
-            if (!out.empty()) out += ", ";
-            out += m.name;
-        }
-    }
-    if (leftOut) *leftOut = out;
-    return kept;
-}
-
 void markPareto(std::vector<AccuracyRow>& rows) {
-    for (AccuracyRow& r : rows) {
-        r.pareto = std::none_of(rows.begin(), rows.end(), [&r](const AccuracyRow& o) {
-            // RMSEs this close are equally accurate: a last-digit difference between two
-            // renders is no accuracy anyone sees, and should not keep a slower method on.
-            const double tie = kParetoRmseTie * std::max(o.error.rmse, r.error.rmse);
-            const bool noWorse =
-                o.times.median <= r.times.median && o.error.rmse <= r.error.rmse + tie;
-            const bool better =
-                o.times.median < r.times.median || o.error.rmse < r.error.rmse - tie;
-            return noWorse && better;
-        });
-    }
+    std::vector<app::ParetoPoint> points;
+    for (const AccuracyRow& r : rows) points.push_back({r.times.median, r.error.rmse});
+    const std::vector<bool> front = app::onParetoFront(points);
+    for (std::size_t k = 0; k < rows.size(); ++k) rows[k].pareto = front[k];
 }
 
 bool reportFresh(const AccuracyReport& report, const AccuracyView& now) {
@@ -202,7 +175,7 @@ void AccuracyJob::run(const Request& request) {
         report->width = scene.camera.width;
         report->height = scene.camera.height;
         report->frames = request.frames;
-        const std::vector<app::AccuracyMethod> methods = methodsBelowTruth(
+        const std::vector<app::AccuracyMethod> methods = app::methodsBelowTruth(
             app::accuracyMethods(scene, request.view.settings), request.samples, &report->leftOut);
 
         const auto t0 = Clock::now();

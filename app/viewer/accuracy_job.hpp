@@ -80,20 +80,11 @@ struct AccuracyReport {
     int frames = 0;                   ///< timed frames per method
     double groundTruthSeconds = 0.0;  ///< how long the ground truth took
     std::vector<AccuracyRow> rows;
-    std::string leftOut;  ///< methods not measured: as many samples as the truth or more
+    std::string leftOut;  ///< methods not measured (app::methodsBelowTruth()): as fine as the truth
 };
 
-/// The methods a ground truth of samples×samples per pixel can judge: those with fewer samples
-/// per pixel than it (a 4×4 method against a 4×4 truth would be measured against itself). The
-/// names of the others, comma separated, go to `leftOut`.
-std::vector<app::AccuracyMethod> methodsBelowTruth(const std::vector<app::AccuracyMethod>& methods,
-                                                   int samples, std::string* leftOut = nullptr);
-
-/// RMSEs within this share of each other count as equal on the Pareto front.
-inline constexpr double kParetoRmseTie = 1e-3;
-
-/// Marks the rows on the Pareto front of (median ms, RMSE): those no other row beats, at least
-/// as good on both and better on one (RMSEs within kParetoRmseTie being equal).
+/// Marks the rows on the Pareto front of (median ms, RMSE) by app::onParetoFront(), the rule
+/// `facet accuracy` uses too.
 void markPareto(std::vector<AccuracyRow>& rows);
 
 /// Whether the report still describes what the viewer shows: the same picture, and settings
