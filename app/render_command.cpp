@@ -91,7 +91,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         "render", "Render a .scene file or a bare .off/.obj mesh to a PNG image");
     addRenderOptions(*cmd, *opts,
                      "Attribute interpolation: affine, perspective, subdivided[:N] (exact every N "
-                     "pixels, affine between; N = 16 by default)");
+                     "pixels, affine between; N = 16 by default)",
+                     RenderCommand::engine);
     auto rendererName = std::make_shared<std::string>("engine");
     cmd->add_option("--renderer", *rendererName,
                     "engine (facet's), or lab: the course's pipeline through the lab's steps "

@@ -214,6 +214,73 @@ TEST_F(Cli, HelpListsTheOptions) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
+/// Whether `help` lists `option` as one of its own (an option line starts "  --name").
+bool listsOption(const std::string& help, const std::string& option) {
+    return help.find("\n  " + option + " ") != std::string::npos ||
+           help.find("\n  " + option + "\n") != std::string::npos ||
+           help.find("," + option + " ") != std::string::npos;
+}
+
+// Each sub-command lists only what it uses; an option it would ignore, given anyway, is bad
+// input (exit 2) with one line naming the option and why, before anything is loaded or drawn.
+struct UnusedOption {
+    const char* option;
+    const char* args;  // the option as given, with a value where it takes one
+    const char* why;   // a word of the reason the message must give
+};
+
+void expectOnlyUsedOptions(const std::string& command, const std::string& tail,
+                           const std::vector<UnusedOption>& unused,
+                           const std::vector<const char*>& used) {
+    const Outcome help = run(command + " --help");
+    ASSERT_EQ(help.exitCode, 0) << help.out;
+    for (const char* option : used) EXPECT_TRUE(listsOption(help.out, option)) << option;
+    for (const UnusedOption& u : unused) {
+        EXPECT_FALSE(listsOption(help.out, u.option)) << command << " lists " << u.option;
+        const Outcome r =
+            run(command + " " + FACET_ASSETS_DIR + "/default.scene " + tail + " " + u.args);
+        EXPECT_EQ(r.exitCode, 2) << command << " " << u.args << ": " << r.out;
+        EXPECT_EQ(countLines(r.out), 1) << r.out;
+        EXPECT_NE(r.out.find(std::string(u.option) + " has no use here"), std::string::npos)
+            << r.out;
+        EXPECT_NE(r.out.find(u.why), std::string::npos) << r.out;
+    }
+}
+
+TEST_F(Cli, RenderListsEveryRenderOption) {
+    expectOnlyUsedOptions("render", "-o " + out("r.png"), {},
+                          {"--output", "--threads", "--subpixel-bits", "--supersample", "--view",
+                           "--msaa", "--frames", "--stats", "--write-scene", "--normals",
+                           "--legend", "--point-size", "--renderer"});
+}
+
+TEST_F(Cli, RenderGlListsOnlyWhatTheOpenGlTwinUses) {
+    expectOnlyUsedOptions("render-gl", "-o " + out("g.png"),
+                          {{"--threads", "--threads 2", "LP_NUM_THREADS"},
+                           {"--subpixel-bits", "--subpixel-bits 4", "sub-pixel grid"},
+                           {"--supersample", "--supersample 2", "one sample per pixel"},
+                           {"--view", "--view overdraw", "CPU engine"}},
+                          {"--output", "--msaa", "--frames", "--stats", "--normals", "--legend",
+                           "--mode", "--shader", "--texture", "--size"});
+}
+
+TEST_F(Cli, InspectListsOnlyWhatDecidesThePixel) {
+    expectOnlyUsedOptions("inspect", "3 3",
+                          {{"--output", "--output x.png", "writes no image"},
+                           {"--frames", "--frames 3", "times nothing"},
+                           {"--threads", "--threads 2", "one thread"},
+                           {"--stats", "--stats", "frame statistics"},
+                           {"--write-scene", "--write-scene x.scene", "writes no files"},
+                           {"--normals", "--normals", "overlays"},
+                           {"--normal-length", "--normal-length 0.5", "overlays"},
+                           {"--legend", "--legend", "overlays"},
+                           {"--point-size", "--point-size 3", "points"},
+                           {"--view", "--view overdraw", "facet render --view"}},
+                          {"--mode", "--shader", "--interp", "--supersample", "--msaa",
+                           "--subpixel-bits", "--truth-samples", "--size", "--eye"});
+    EXPECT_FALSE(fs::exists("x.scene"));
+}
+
 TEST_F(Cli, VersionPrintsTheProjectVersion) {
     const Outcome r = run("--version");
     EXPECT_EQ(r.exitCode, 0);
