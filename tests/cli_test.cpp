@@ -136,6 +136,31 @@ TEST_F(Cli, TextureErrorsNameTheImage) {
     EXPECT_FALSE(fs::exists(out("x.png")));
 }
 
+// A truncated photograph given as --texture: exit 2, one line naming the file and the damage,
+// and no image (before, libjpeg's warning was swallowed and a grey wall written with exit 0).
+TEST_F(Cli, TruncatedJpegTextureIsBadInput) {
+    const std::string course = facet::test::sharedData("course/");
+    REQUIRE_SHARED_DATA(course + "brick.jpg");
+    std::ostringstream bytes;
+    bytes << std::ifstream(course + "brick.jpg", std::ios::binary).rdbuf();
+    const std::string whole = bytes.str();
+    ASSERT_GT(whole.size(), 4000u);
+    std::ofstream(out("brick_cut.jpg"), std::ios::binary) << whole.substr(0, whole.size() * 3 / 4);
+    const std::string scene = course + "example_textured.scene";
+    const Outcome good = run("render " + scene + " -o " + out("good.png") + " --texture " + course +
+                             "brick.jpg --size 64x48");
+    ASSERT_EQ(good.exitCode, 0) << good.out;
+    const Outcome r = run("render " + scene + " -o " + out("x.png") + " --texture " +
+                          out("brick_cut.jpg") + " --size 64x48");
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_EQ(countLines(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(out("brick_cut.jpg") + ": cannot decode the image, it may be damaged or "
+                                                "truncated (libjpeg: Premature end of JPEG file)"),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(out("x.png")));
+}
+
 // A frame over kMaxFrameBytes is refused with the sizes before anything is allocated (the
 // command returns at once instead of being killed for memory).
 TEST_F(Cli, FramesOverTheMemoryLimitAreRefused) {
