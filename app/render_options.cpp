@@ -189,7 +189,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
 }
 
 int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
-                  RenderSettings& settings) {
+                  RenderSettings& settings, ProgressLine* progress) {
     auto bad = [command](const std::string& message) {
         std::fprintf(stderr, "%s: %s\n", command, message.c_str());
         return kBadInput;
@@ -246,11 +246,16 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     open.width = w > 0 ? w : kBareMeshWidth;
     open.height = w > 0 ? h : kBareMeshHeight;
     if (!o.up.empty()) open.up = *parseUpAxis(o.up);
-    Result<Scene> loaded = openSceneFile(o.scene, open);
+    if (progress) progress->phase("loading " + o.scene);
+    Result<Scene> loaded = openSceneFile(o.scene, open, progress ? progress->control() : nullptr);
     if (!loaded) return bad(loaded.error().what());
     scene = std::move(loaded).value();
     if (!o.texture.empty()) {
-        if (Status st = loadSceneTexture(scene, o.texture); !st) return bad(st.error().what());
+        if (progress) progress->phase("loading " + o.texture);
+        if (Status st =
+                loadSceneTexture(scene, o.texture, progress ? progress->control() : nullptr);
+            !st)
+            return bad(st.error().what());
     }
     // One rule for what a scene opens with, whichever route opened it (conventions §9): the
     // viewer's, so a bare mesh and the scene written from it render alike; options override it.
@@ -297,9 +302,10 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     return kOk;
 }
 
-Status writeOutput(const Framebuffer& frame, const std::string& output) {
-    if (output != "-") return writePng(frame, output);
-    Result<std::string> bytes = encodePng(frame);
+Status writeOutput(const Framebuffer& frame, const std::string& output,
+                   const LoadControl* control) {
+    if (output != "-") return writePng(frame, output, control);
+    Result<std::string> bytes = encodePng(frame, control);
     if (!bytes) return bytes.error();
     if (std::fwrite(bytes.value().data(), 1, bytes.value().size(), stdout) !=
             bytes.value().size() ||

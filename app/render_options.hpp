@@ -14,6 +14,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
+#include "progress_line.hpp"
 
 namespace facet::app {
 
@@ -68,14 +69,17 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& 
 /// --texture), applies --size, fills `settings` and writes --write-scene. On bad input prints one
 /// line prefixed with `command` on stderr and returns kBadInput (kFailed when the scene cannot be
 /// written); kOk otherwise.
+/// `progress` (optional) shows the loading phase.
 int prepareRender(const RenderOptions& options, const char* command, Scene& scene,
-                  RenderSettings& settings);
+                  RenderSettings& settings, ProgressLine* progress = nullptr);
 
 /// Prints `median X ms (min, max) over N frames` to `out` when more than one frame was timed.
 void printFrameTimes(std::vector<double> ms, std::FILE* out = stdout);
 
 /// Writes the frame to -o: a PNG file, or the PNG's bytes on standard output for "-".
-Status writeOutput(const Framebuffer& frame, const std::string& output);
+/// `control` (optional) hears the rows encoded.
+Status writeOutput(const Framebuffer& frame, const std::string& output,
+                   const LoadControl* control = nullptr);
 
 /// Where a command's report goes: stderr when -o - puts the image on stdout.
 std::FILE* reportStream(const std::string& output);

@@ -161,6 +161,32 @@ TEST_F(Cli, TruncatedJpegTextureIsBadInput) {
     EXPECT_FALSE(fs::exists(out("x.png")));
 }
 
+// Progress on renders that take seconds: nothing for a fast render; once past the delay (a
+// second; FACET_PROGRESS_AFTER sets it, 0 here so the test need not wait) each phase on stderr,
+// with its percentage where it is known, and stdout keeps only the report.
+TEST_F(Cli, ProgressShowsThePhasesOfASlowRenderOnly) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    const Outcome fast = run("render " + scene + " -o " + out("f.png") + " --size 64x48");
+    ASSERT_EQ(fast.exitCode, 0) << fast.out;
+    EXPECT_EQ(fast.out.find("facet render:"), std::string::npos) << fast.out;
+    EXPECT_EQ(countLines(fast.out), 1) << fast.out;
+
+    const Outcome slow =
+        facet_test::runCommand("FACET_PROGRESS_AFTER=0 " + std::string(FACET_CLI) + " render " +
+                               scene + " -o " + out("s.png") + " --size 64x48 --frames 2");
+    ASSERT_EQ(slow.exitCode, 0) << slow.out;
+    for (const std::string& line :
+         {"facet render: loading " + scene, std::string("facet render: drawing frame 1 of 2 0%"),
+          std::string("facet render: drawing frame 2 of 2 50%"),
+          "facet render: encoding " + out("s.png") + " 0%"})
+        EXPECT_NE(slow.out.find(line), std::string::npos) << line << "\n" << slow.out;
+    // The lines go to stderr: with -o - stdout holds the PNG alone.
+    const Outcome piped =
+        facet_test::runCommand("FACET_PROGRESS_AFTER=0 " + std::string(FACET_CLI) + " render " +
+                               scene + " -o - --size 64x48 2>/dev/null | head -c 8 | od -c");
+    EXPECT_NE(piped.out.find("P   N   G"), std::string::npos) << piped.out;
+}
+
 // A frame over kMaxFrameBytes is refused with the sizes before anything is allocated (the
 // command returns at once instead of being killed for memory).
 TEST_F(Cli, FramesOverTheMemoryLimitAreRefused) {

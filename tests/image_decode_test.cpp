@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -20,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/image_io.hpp"
 #include "facet/limits.hpp"
 #include "facet/texture.hpp"
 #include "io/image_decode.hpp"
@@ -229,6 +231,48 @@ TEST(ImageDecode, TruncatedOrCorruptJpegIsAnErrorNamingTheFile) {
     const Result<Texture> c = loadTexture(write("corrupt.jpg", corrupt));
     ASSERT_FALSE(c.ok());
     EXPECT_NE(c.error().what().find("Corrupt JPEG data"), std::string::npos) << c.error().what();
+    fs::remove_all(dir);
+}
+
+// The PNG writer (libpng, fastest level, Sub filter) loses nothing: what it writes decodes to
+// the frame's pixels, alpha dropped; its progress rises to 1; a cancel leaves no file behind.
+TEST(ImageDecode, WrittenPngDecodesToTheFramesPixels) {
+    Framebuffer frame;
+    ASSERT_TRUE(frame.resize(301, 203));
+    std::uint32_t state = 12345u;
+    for (std::size_t i = 0; i < frame.color.size(); ++i) {
+        state = state * 1664525u + 1013904223u;  // noise and flat runs, as in a render
+        frame.color[i] = (i / 301) % 3 == 0 ? 0xFF5C5C5Cu : (state | 0xFF000000u);
+    }
+    frame.color[7] &= 0x00FFFFFFu;  // a zero alpha is written opaque: PNGs are RGB
+    const fs::path dir =
+        fs::temp_directory_path() / ("facet_png_write_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string path = (dir / "frame.png").string();
+    std::vector<float> reports;
+    LoadControl control;
+    control.progress = [&reports](float f) { reports.push_back(f); };
+    ASSERT_TRUE(writePng(frame, path, &control));
+    ASSERT_FALSE(reports.empty());
+    EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
+    EXPECT_EQ(reports.back(), 1.0f);
+    const Result<Texture> back = loadTexture(path);
+    ASSERT_TRUE(back.ok()) << back.error().what();
+    std::vector<std::uint32_t> opaque = frame.color;
+    for (std::uint32_t& p : opaque) p |= 0xFF000000u;
+    EXPECT_EQ(back->level(0).texels, opaque);
+    const Result<std::string> bytes = encodePng(frame);
+    ASSERT_TRUE(bytes.ok());
+    const std::vector<unsigned char> file = readBytes(path);
+    EXPECT_TRUE(bytes.value() == std::string(file.begin(), file.end()));  // no dump of bytes
+
+    std::atomic<bool> cancel{true};
+    LoadControl stop;
+    stop.cancel = &cancel;
+    const Status cancelled = writePng(frame, (dir / "cancelled.png").string(), &stop);
+    ASSERT_FALSE(cancelled);
+    EXPECT_NE(cancelled.error().what().find("cancelled"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir / "cancelled.png"));
     fs::remove_all(dir);
 }
 
