@@ -28,12 +28,6 @@ int runGlRender(const RenderOptions& o) {
     RenderSettings settings;
     if (const int code = prepareRender(o, "facet render-gl", scene, settings); code != kOk)
         return code;
-    if (settings.view != DebugView::None) {
-        std::fprintf(stderr,
-                     "facet render-gl: --view is drawn by the CPU engine only (facet "
-                     "render)\n");
-        return kBadInput;
-    }
 
     Result<GlContext> context = GlContext::createHeadless();
     if (!context) return failed(context.error().what());
@@ -87,7 +81,8 @@ void addGlRenderCommand(CLI::App& app, int& exitCode) {
         "render-gl",
         "Render a .scene file or a mesh with the OpenGL twin (headless EGL) to a PNG image");
     addRenderOptions(*cmd, *opts,
-                     "affine or perspective (subdivided[:N] is drawn perspective-correct)");
+                     "affine or perspective (subdivided[:N] is drawn perspective-correct)",
+                     RenderCommand::openGl);
     cmd->callback([opts, &exitCode] { exitCode = runGlRender(*opts); });
 }
 

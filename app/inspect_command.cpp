@@ -147,7 +147,8 @@ void addInspectCommand(CLI::App& app, int& exitCode) {
         "Why pixel X Y has its colour: every fragment that reached it, in draw order (coverage and "
         "the top-left rule, depth test, weights, interpolated values, lighting, texels), with the "
         "reference path's value and the ground truth");
-    addRenderOptions(*cmd, *opts, "Interpolation: affine, perspective, subdivided[:N]", false);
+    addRenderOptions(*cmd, *opts, "Interpolation: affine, perspective, subdivided[:N]",
+                     RenderCommand::inspect);
     cmd->add_option("x", *x, "Pixel column (0 at the left)")->required();
     cmd->add_option("y", *y, "Pixel row (0 at the top)")->required();
     cmd->add_option("--truth-samples", *samples,

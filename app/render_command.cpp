@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 #include "lab_render.hpp"
+#include "progress_line.hpp"
 #include "render_options.hpp"
 
 namespace facet::app {
@@ -21,15 +23,28 @@ namespace {
 int runRender(const RenderOptions& o, const std::string& rendererName) {
     Scene scene;
     RenderSettings settings;
-    if (const int code = prepareRender(o, "facet render", scene, settings); code != kOk)
+    // Quiet for a second, then the phase on stderr: a 16384² frame takes tens of seconds.
+    std::optional<ProgressLine> progress(std::in_place, "facet render");
+    if (const int code = prepareRender(o, "facet render", scene, settings, &*progress); code != kOk)
         return code;
-    if (rendererName == "lab") return renderLab(scene, settings, o.output);
+    if (rendererName == "lab") {
+        progress.reset();  // the lab's pipeline reports nothing
+        return renderLab(scene, settings, o.output);
+    }
 
     Renderer renderer;
     Framebuffer frame;
     RenderStats stats;
     std::vector<double> ms;
-    for (int i = 0; i < std::max(1, o.frames); ++i) {
+    const int frames = std::max(1, o.frames);
+    for (int i = 0; i < frames; ++i) {
+        if (frames == 1)
+            progress->phase("drawing " + std::to_string(scene.camera.width) + "x" +
+                            std::to_string(scene.camera.height));
+        else
+            progress->phase(
+                "drawing frame " + std::to_string(i + 1) + " of " + std::to_string(frames),
+                static_cast<float>(i) / static_cast<float>(frames));
         const auto t0 = std::chrono::steady_clock::now();
         Result<RenderStats> rendered = renderer.render(scene, settings, frame);
         const auto t1 = std::chrono::steady_clock::now();
@@ -41,8 +56,15 @@ int runRender(const RenderOptions& o, const std::string& rendererName) {
         ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     }
     std::FILE* info = reportStream(o.output);  // stderr when the PNG goes to stdout
-    if (Status st = writeOutput(frame, o.output); !st) {
-        std::fprintf(stderr, "facet render: %s\n", st.error().what().c_str());
+    progress->phase("encoding " + (o.output == "-" ? std::string("to standard output") : o.output),
+                    0.0f);
+    const auto e0 = std::chrono::steady_clock::now();
+    const Status written = writeOutput(frame, o.output, progress->control());
+    const double encodeMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count();
+    progress.reset();  // the line is cleared before the report
+    if (!written) {
+        std::fprintf(stderr, "facet render: %s\n", written.error().what().c_str());
         return kFailed;
     }
     std::fprintf(info, "wrote %s (%dx%d, %s, %s, %s, lighting %s%s%s)\n", o.output.c_str(),
@@ -79,6 +101,7 @@ int runRender(const RenderOptions& o, const std::string& rendererName) {
                      "time: %.3f ms (last frame: clear %.3f, vertices %.3f, raster + shade %.3f, "
                      "post %.3f)\n",
                      ms.back(), stats.clearMs, stats.vertexMs, stats.rasterMs, stats.postMs);
+        std::fprintf(info, "png: %.3f ms to encode and write\n", encodeMs);
     }
     return kOk;
 }
@@ -91,7 +114,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         "render", "Render a .scene file or a bare .off/.obj mesh to a PNG image");
     addRenderOptions(*cmd, *opts,
                      "Attribute interpolation: affine, perspective, subdivided[:N] (exact every N "
-                     "pixels, affine between; N = 16 by default)");
+                     "pixels, affine between; N = 16 by default)",
+                     RenderCommand::engine);
     auto rendererName = std::make_shared<std::string>("engine");
     cmd->add_option("--renderer", *rendererName,
                     "engine (facet's), or lab: the course's pipeline through the lab's steps "

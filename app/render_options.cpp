@@ -65,15 +65,29 @@ std::vector<std::string> choices(const std::vector<std::string_view>& names) {
 }  // namespace
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interpHelp,
-                      bool withOutput) {
+                      RenderCommand command) {
+    const bool engine = command == RenderCommand::engine;
+    const bool gl = command == RenderCommand::openGl;
+    const bool inspect = command == RenderCommand::inspect;
+    // An option the command does not use stays out of its --help; given anyway, prepareRender
+    // refuses it with `why` rather than drawing what was not asked for.
+    auto usedIf = [&o](CLI::Option* option, bool used, const char* why) {
+        if (!used) {
+            option->group("");
+            o.unused.emplace_back(option, why);
+        }
+        return option;
+    };
     cmd.add_option("scene", o.scene,
                    "The .scene file, or a bare .off/.obj mesh (framed from a three-quarter view, "
                    "lit by a light near the camera)")
         ->required();
-    if (withOutput)
-        cmd.add_option("-o,--output", o.output,
-                       "Output image: a .png file, or - for the PNG on standard output")
-            ->required();
+    CLI::Option* output = cmd.add_option(
+        "-o,--output", o.output, "Output image: a .png file, or - for the PNG on standard output");
+    if (inspect)
+        usedIf(output, false, "inspect writes no image: it prints the pixel's history");
+    else
+        output->required();
     cmd.add_option("--mode", o.mode, "Draw mode")
         ->check(CLI::IsMember(choices(drawModeNames())))
         ->capture_default_str();
@@ -96,13 +110,19 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                      "Texture shader: multiply the texel by the (lit) vertex colour (default: on "
                      "for a textured mesh without vertex colours, off otherwise)");
     cmd.add_flag("--no-combine", o.noCombine, "Texture shader: the texel alone")->excludes(combine);
-    cmd.add_flag("--normals", o.normals, "Draw vertex normals as red segments");
-    cmd.add_flag("--legend", o.legend,
-                 "Depth shader: draw a legend bar with the near and far depth it maps");
-    cmd.add_option("--normal-length", o.normalLength,
-                   "Length of the normal segments in world units (implies --normals; default: "
-                   "bounding-box diagonal / 100)")
-        ->check(CLI::PositiveNumber);
+    constexpr const char* kOverlay =
+        "inspect lists the triangles' fragments; overlays drawn after them are not part of a "
+        "pixel's history (see them with facet render)";
+    usedIf(cmd.add_flag("--normals", o.normals, "Draw vertex normals as red segments"), !inspect,
+           kOverlay);
+    usedIf(cmd.add_flag("--legend", o.legend,
+                        "Depth shader: draw a legend bar with the near and far depth it maps"),
+           !inspect, kOverlay);
+    usedIf(cmd.add_option("--normal-length", o.normalLength,
+                          "Length of the normal segments in world units (implies --normals; "
+                          "default: bounding-box diagonal / 100)")
+               ->check(CLI::PositiveNumber),
+           !inspect, kOverlay);
     cmd.add_flag("--cull", o.cull, "Drop back-facing triangles");
     cmd.add_option("--size", o.size,
                    "Image size WxH (a .scene: the focal length scales with the width; a bare "
@@ -113,56 +133,70 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
         ->check(CLI::IsMember({"x", "y", "z", "X", "Y", "Z"}));
     cmd.add_option("--eye", o.eye, "Camera position X,Y,Z, replacing the scene's");
     cmd.add_option("--look", o.look, "Look-at point X,Y,Z, replacing the scene's");
-    cmd.add_option("--write-scene", o.writeScene,
-                   "Also save the scene (mesh, camera, size, light, material, texture) as a "
-                   ".scene file that renders the same image with the same options");
+    usedIf(cmd.add_option("--write-scene", o.writeScene,
+                          "Also save the scene (mesh, camera, size, light, material, texture) as "
+                          "a .scene file that renders the same image with the same options"),
+           !inspect, "inspect writes no files (save the scene with facet render --write-scene)");
     cmd.add_option("--background", o.background, "Background colour, hex RRGGBB")
         ->capture_default_str();
     cmd.add_option("--near", o.nearPlane, "Near plane distance (default: 1/1000 of the mesh size)")
         ->check(CLI::NonNegativeNumber);
-    cmd.add_option("--point-size", o.pointSize, "Side of the vertex squares in pixels")
-        ->check(CLI::Range(1, 64))
-        ->capture_default_str();
-    cmd.add_option("--frames", o.frames, "Render N frames and print the median time")
-        ->check(CLI::Range(1, 100000));
-    cmd.add_option("--threads", o.threads,
-                   "Worker threads for the CPU engine (0: all cores; the OpenGL twin uses "
-                   "LP_NUM_THREADS instead)")
-        ->check(CLI::Range(0, 256))
-        ->capture_default_str();
-    cmd.add_option("--subpixel-bits", o.subPixelBits,
-                   "Fractional bits of the sub-pixel grid vertices snap to for coverage (CPU "
-                   "engine; the OpenGL twin keeps its own)")
-        ->check(CLI::Range(kMinSubPixelBits, kMaxSubPixelBits))
-        ->capture_default_str();
-    cmd.add_option("--supersample", o.supersample,
-                   "Samples per pixel axis: render N×N times the pixels and average them "
-                   "(anti-aliasing; solid mode; CPU engine)")
-        ->check(CLI::Range(1, 4))
-        ->capture_default_str();
-    cmd.add_option("--view", o.view,
-                   "Debug view instead of the shaded image, a heat map with a legend: overdraw "
-                   "(fragments per pixel), triangle-size (pixels of the triangle that wrote "
-                   "each pixel), bin-load (triangles per 64x64 tile), depth-test (passed, "
-                   "failed, no fragment), texture-lod (mip level under trilinear), interp-error "
-                   "(affine against perspective, 8-bit steps); CPU engine")
-        ->check(CLI::IsMember(choices(debugViewNames())))
-        ->capture_default_str();
+    usedIf(cmd.add_option("--point-size", o.pointSize, "Side of the vertex squares in pixels")
+               ->check(CLI::Range(1, 64))
+               ->capture_default_str(),
+           !inspect, "inspect follows triangles (solid mode), not points");
+    usedIf(cmd.add_option("--frames", o.frames, "Render N frames and print the median time")
+               ->check(CLI::Range(1, 100000)),
+           !inspect, "inspect follows one pixel once and times nothing");
+    usedIf(cmd.add_option("--threads", o.threads, "Worker threads (0: all cores)")
+               ->check(CLI::Range(0, 256))
+               ->capture_default_str(),
+           engine,
+           gl ? "the OpenGL twin runs on the driver's threads (llvmpipe: set LP_NUM_THREADS)"
+              : "inspect follows one pixel on one thread");
+    usedIf(cmd.add_option("--subpixel-bits", o.subPixelBits,
+                          "Fractional bits of the sub-pixel grid vertices snap to for coverage")
+               ->check(CLI::Range(kMinSubPixelBits, kMaxSubPixelBits))
+               ->capture_default_str(),
+           !gl, "the OpenGL driver snaps vertices to its own sub-pixel grid (facet render has it)");
+    usedIf(cmd.add_option("--supersample", o.supersample,
+                          "Samples per pixel axis: render N×N times the pixels and average them "
+                          "(anti-aliasing; solid mode)")
+               ->check(CLI::Range(1, 4))
+               ->capture_default_str(),
+           !gl,
+           "the OpenGL twin draws one sample per pixel (it multisamples with --msaa; facet "
+           "render supersamples)");
+    usedIf(cmd.add_option("--view", o.view,
+                          "Debug view instead of the shaded image, a heat map with a legend: "
+                          "overdraw (fragments per pixel), triangle-size (pixels of the triangle "
+                          "that wrote each pixel), bin-load (triangles per 64x64 tile), "
+                          "depth-test (passed, failed, no fragment), texture-lod (mip level under "
+                          "trilinear), interp-error (affine against perspective, 8-bit steps)")
+               ->check(CLI::IsMember(choices(debugViewNames())))
+               ->capture_default_str(),
+           engine,
+           gl ? "debug views are drawn by the CPU engine only (facet render --view)"
+              : "inspect follows the shaded image (a debug view is facet render --view)");
     cmd.add_option("--msaa", o.msaa,
                    "Multisampling: coverage and depth at N standard sample positions per pixel, "
                    "shaded once per pixel, averaged (edges anti-aliased, not textures or "
                    "highlights; solid mode)")
         ->check(CLI::IsMember({1, 2, 4, 8}))
         ->capture_default_str();
-    cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics");
+    usedIf(cmd.add_flag("--stats", o.stats, "Print mesh and draw statistics"), !inspect,
+           "inspect prints the pixel's history, not frame statistics");
 }
 
 int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
-                  RenderSettings& settings) {
+                  RenderSettings& settings, ProgressLine* progress) {
     auto bad = [command](const std::string& message) {
         std::fprintf(stderr, "%s: %s\n", command, message.c_str());
         return kBadInput;
     };
+    for (const auto& [option, why] : o.unused)
+        if (option->count() > 0)
+            return bad("--" + option->get_lnames().front() + " has no use here: " + why);
     // Only PNG is written: another extension would get PNG bytes under a wrong name.
     if (!o.output.empty() && o.output != "-") {
         std::string ext = std::filesystem::path(o.output).extension().string();
@@ -212,11 +246,16 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     open.width = w > 0 ? w : kBareMeshWidth;
     open.height = w > 0 ? h : kBareMeshHeight;
     if (!o.up.empty()) open.up = *parseUpAxis(o.up);
-    Result<Scene> loaded = openSceneFile(o.scene, open);
+    if (progress) progress->phase("loading " + o.scene);
+    Result<Scene> loaded = openSceneFile(o.scene, open, progress ? progress->control() : nullptr);
     if (!loaded) return bad(loaded.error().what());
     scene = std::move(loaded).value();
     if (!o.texture.empty()) {
-        if (Status st = loadSceneTexture(scene, o.texture); !st) return bad(st.error().what());
+        if (progress) progress->phase("loading " + o.texture);
+        if (Status st =
+                loadSceneTexture(scene, o.texture, progress ? progress->control() : nullptr);
+            !st)
+            return bad(st.error().what());
     }
     // One rule for what a scene opens with, whichever route opened it (conventions §9): the
     // viewer's, so a bare mesh and the scene written from it render alike; options override it.
@@ -263,9 +302,10 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
     return kOk;
 }
 
-Status writeOutput(const Framebuffer& frame, const std::string& output) {
-    if (output != "-") return writePng(frame, output);
-    Result<std::string> bytes = encodePng(frame);
+Status writeOutput(const Framebuffer& frame, const std::string& output,
+                   const LoadControl* control) {
+    if (output != "-") return writePng(frame, output, control);
+    Result<std::string> bytes = encodePng(frame, control);
     if (!bytes) return bytes.error();
     if (std::fwrite(bytes.value().data(), 1, bytes.value().size(), stdout) !=
             bytes.value().size() ||

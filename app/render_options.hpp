@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
+#include "progress_line.hpp"
 
 namespace facet::app {
 
@@ -47,24 +49,37 @@ struct RenderOptions {
     int supersample = 1;        ///< samples per pixel axis (supersampling), 1…4
     int msaa = 1;               ///< samples per pixel of multisampling: 1, 2, 4 or 8
     std::string view = "none";  ///< --view: a debug view instead of the shaded image
+    /// Options this command takes no notice of: registered out of --help so that giving one is
+    /// refused with why (prepareRender), instead of CLI11's bare "not expected".
+    std::vector<std::pair<const CLI::Option*, std::string>> unused;
 };
 
-/// Registers the shared options on `cmd`; `interpHelp` describes --interp for this renderer.
-/// Without `withOutput`, no -o (a command that writes no image).
-void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& interpHelp,
-                      bool withOutput = true);
+/// Which command the options are for: each lists only the options it uses.
+enum class RenderCommand {
+    engine,  ///< facet render: every option
+    openGl,  ///< facet render-gl: no --threads, --subpixel-bits, --supersample or --view
+    inspect  ///< facet inspect: what decides one pixel's history; no output, timing or overlays
+};
 
-/// Loads the scene or bare mesh (and --texture), applies --size, fills `settings` and writes
-/// --write-scene. On bad input prints one line prefixed with `command` on stderr and returns
-/// kBadInput (kFailed when the scene cannot be written); kOk otherwise.
+/// Registers the options `command` uses on `cmd`; `interpHelp` describes --interp for it.
+void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& interpHelp,
+                      RenderCommand command);
+
+/// Refuses an option the command does not use, then loads the scene or bare mesh (and
+/// --texture), applies --size, fills `settings` and writes --write-scene. On bad input prints one
+/// line prefixed with `command` on stderr and returns kBadInput (kFailed when the scene cannot be
+/// written); kOk otherwise.
+/// `progress` (optional) shows the loading phase.
 int prepareRender(const RenderOptions& options, const char* command, Scene& scene,
-                  RenderSettings& settings);
+                  RenderSettings& settings, ProgressLine* progress = nullptr);
 
 /// Prints `median X ms (min, max) over N frames` to `out` when more than one frame was timed.
 void printFrameTimes(std::vector<double> ms, std::FILE* out = stdout);
 
 /// Writes the frame to -o: a PNG file, or the PNG's bytes on standard output for "-".
-Status writeOutput(const Framebuffer& frame, const std::string& output);
+/// `control` (optional) hears the rows encoded.
+Status writeOutput(const Framebuffer& frame, const std::string& output,
+                   const LoadControl* control = nullptr);
 
 /// Where a command's report goes: stderr when -o - puts the image on stdout.
 std::FILE* reportStream(const std::string& output);

@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # The library as a user gets it (docs/library.md): installs facet into a temporary prefix, builds
 # examples/ there as an outside CMake project with find_package(facet), runs each example, and
-# links a one-file program with `pkg-config --cflags --libs facet`. Exits non-zero on the first
-# failure; everything it makes is in a temporary folder, removed afterwards.
+# links a one-file program with `pkg-config --cflags --libs facet`; then consumes the source tree
+# as a subproject (FetchContent from the folder, built and run; FetchContent from a file:// git
+# URL of the clone and add_subdirectory, configured), checking that only the engine is built: no
+# GoogleTest, GLFW, ImGui, epoxy or CLI11 looked for, and the parent's build type left alone.
+# Exits non-zero on the first failure; everything it makes is in a temporary folder, removed
+# afterwards.
 #
 #   scripts/check-install.sh BUILD   installs from an existing build folder (CI: the one `make
 #                                    test` built, so nothing is compiled twice)
@@ -78,3 +82,77 @@ export PKG_CONFIG_PATH="$(dirname "$(find "$prefix" -name facet.pc | head -n 1)"
 "${CXX:-c++}" -std=c++20 -O1 "$work/one_file.cpp" -o "$work/one_file" $(pkg-config --cflags --libs facet)
 "$work/one_file"
 echo "== the installed library works: $(pkg-config --modversion facet)"
+
+echo "== facet as a subproject: FetchContent and add_subdirectory, the engine alone"
+mkdir -p "$work/consumer"
+cat >"$work/consumer/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.22)
+project(facet_consumer LANGUAGES CXX)
+set(FACET_SOURCE "" CACHE STRING "facet's source: a folder or a git URL")
+set(FACET_TAG "" CACHE STRING "the commit to check out when FACET_SOURCE is a git URL")
+option(FACET_AS_SUBDIRECTORY "add_subdirectory instead of FetchContent" OFF)
+if(FACET_AS_SUBDIRECTORY)
+  add_subdirectory(${FACET_SOURCE} facet)
+else()
+  include(FetchContent)
+  if(FACET_TAG)
+    FetchContent_Declare(facet GIT_REPOSITORY ${FACET_SOURCE} GIT_TAG ${FACET_TAG})
+  else()
+    FetchContent_Declare(facet SOURCE_DIR ${FACET_SOURCE})
+  endif()
+  FetchContent_MakeAvailable(facet)
+endif()
+add_executable(consumer main.cpp)
+target_link_libraries(consumer PRIVATE facet::engine)
+CMAKE
+cat >"$work/consumer/main.cpp" <<'CPP'
+#include <cstdio>
+
+#include "facet/image_io.hpp"
+#include "facet/render.hpp"
+#include "facet/scene_io.hpp"
+
+int main(int argc, char** argv) {
+    if (argc != 3) return 2;
+    facet::Result<facet::Scene> scene = facet::openSceneFile(argv[1]);
+    if (!scene) {
+        std::fprintf(stderr, "%s\n", scene.error().what().c_str());
+        return 1;
+    }
+    facet::Renderer renderer;
+    facet::Framebuffer frame;
+    if (!renderer.render(scene.value(), {}, frame) || !facet::writePng(frame, argv[2])) return 1;
+    std::printf("consumer: %dx%d\n", frame.width, frame.height);
+    return 0;
+}
+CPP
+# Only the engine's targets and none of the app's dependencies; the parent's build type kept.
+only_the_engine() {
+  local dir="$1" type="$2"
+  grep -qx "CMAKE_BUILD_TYPE:STRING=$type" "$dir/CMakeCache.txt" || {
+    echo "$dir: the build type is not the parent's '$type'" >&2
+    exit 1
+  }
+  if grep -Eq '^(GTest|GTEST|glfw3|CLI11|IMGUI|EPOXY|imgui)[A-Za-z_]*:' "$dir/CMakeCache.txt" ||
+    cmake --build "$dir" --target help | grep -Eiq 'gtest|glfw|imgui|cli11|facet-view|^facet:'; then
+    echo "$dir: facet as a subproject looked for or builds more than the engine" >&2
+    exit 1
+  fi
+}
+# FetchContent from the folder, no build type (the parent's choice, here none): built and run.
+cmake -S "$work/consumer" -B "$work/fetch" "${generator[@]}" -DFACET_SOURCE="$src" >/dev/null
+only_the_engine "$work/fetch" ""
+cmake --build "$work/fetch"
+"$work/fetch/consumer" "$src/assets/default.scene" "$work/consumer.png"
+# add_subdirectory, Debug: configured (the same engine build as above).
+cmake -S "$work/consumer" -B "$work/subdirectory" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug \
+  -DFACET_SOURCE="$src" -DFACET_AS_SUBDIRECTORY=ON >/dev/null
+only_the_engine "$work/subdirectory" Debug
+# FetchContent from a file:// git URL of the clone at its current commit: configured.
+if commit="$(git -C "$src" rev-parse HEAD 2>/dev/null)"; then
+  cmake -S "$work/consumer" -B "$work/git" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DFACET_SOURCE="file://$src" -DFACET_TAG="$commit" >/dev/null
+  only_the_engine "$work/git" RelWithDebInfo
+  test -f "$work/git/_deps/facet-src/engine/include/facet/render.hpp"
+fi
+echo "== facet as a subproject: the engine alone, the parent's build type kept"

@@ -136,6 +136,57 @@ TEST_F(Cli, TextureErrorsNameTheImage) {
     EXPECT_FALSE(fs::exists(out("x.png")));
 }
 
+// A truncated photograph given as --texture: exit 2, one line naming the file and the damage,
+// and no image (before, libjpeg's warning was swallowed and a grey wall written with exit 0).
+TEST_F(Cli, TruncatedJpegTextureIsBadInput) {
+    const std::string course = facet::test::sharedData("course/");
+    REQUIRE_SHARED_DATA(course + "brick.jpg");
+    std::ostringstream bytes;
+    bytes << std::ifstream(course + "brick.jpg", std::ios::binary).rdbuf();
+    const std::string whole = bytes.str();
+    ASSERT_GT(whole.size(), 4000u);
+    std::ofstream(out("brick_cut.jpg"), std::ios::binary) << whole.substr(0, whole.size() * 3 / 4);
+    const std::string scene = course + "example_textured.scene";
+    const Outcome good = run("render " + scene + " -o " + out("good.png") + " --texture " + course +
+                             "brick.jpg --size 64x48");
+    ASSERT_EQ(good.exitCode, 0) << good.out;
+    const Outcome r = run("render " + scene + " -o " + out("x.png") + " --texture " +
+                          out("brick_cut.jpg") + " --size 64x48");
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_EQ(countLines(r.out), 1) << r.out;
+    EXPECT_NE(r.out.find(out("brick_cut.jpg") + ": cannot decode the image, it may be damaged or "
+                                                "truncated (libjpeg: Premature end of JPEG file)"),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(out("x.png")));
+}
+
+// Progress on renders that take seconds: nothing for a fast render; once past the delay (a
+// second; FACET_PROGRESS_AFTER sets it, 0 here so the test need not wait) each phase on stderr,
+// with its percentage where it is known, and stdout keeps only the report.
+TEST_F(Cli, ProgressShowsThePhasesOfASlowRenderOnly) {
+    const std::string scene = std::string(FACET_ASSETS_DIR) + "/default.scene";
+    const Outcome fast = run("render " + scene + " -o " + out("f.png") + " --size 64x48");
+    ASSERT_EQ(fast.exitCode, 0) << fast.out;
+    EXPECT_EQ(fast.out.find("facet render:"), std::string::npos) << fast.out;
+    EXPECT_EQ(countLines(fast.out), 1) << fast.out;
+
+    const Outcome slow =
+        facet_test::runCommand("FACET_PROGRESS_AFTER=0 " + std::string(FACET_CLI) + " render " +
+                               scene + " -o " + out("s.png") + " --size 64x48 --frames 2");
+    ASSERT_EQ(slow.exitCode, 0) << slow.out;
+    for (const std::string& line :
+         {"facet render: loading " + scene, std::string("facet render: drawing frame 1 of 2 0%"),
+          std::string("facet render: drawing frame 2 of 2 50%"),
+          "facet render: encoding " + out("s.png") + " 0%"})
+        EXPECT_NE(slow.out.find(line), std::string::npos) << line << "\n" << slow.out;
+    // The lines go to stderr: with -o - stdout holds the PNG alone.
+    const Outcome piped =
+        facet_test::runCommand("FACET_PROGRESS_AFTER=0 " + std::string(FACET_CLI) + " render " +
+                               scene + " -o - --size 64x48 2>/dev/null | head -c 8 | od -c");
+    EXPECT_NE(piped.out.find("P   N   G"), std::string::npos) << piped.out;
+}
+
 // A frame over kMaxFrameBytes is refused with the sizes before anything is allocated (the
 // command returns at once instead of being killed for memory).
 TEST_F(Cli, FramesOverTheMemoryLimitAreRefused) {
@@ -212,6 +263,73 @@ TEST_F(Cli, HelpListsTheOptions) {
                             "--background", "--texture", "--filter", "--combine", "--normals",
                             "--normal-length", "--legend", "subdivided", "--view", "bin-load"})
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+/// Whether `help` lists `option` as one of its own (an option line starts "  --name").
+bool listsOption(const std::string& help, const std::string& option) {
+    return help.find("\n  " + option + " ") != std::string::npos ||
+           help.find("\n  " + option + "\n") != std::string::npos ||
+           help.find("," + option + " ") != std::string::npos;
+}
+
+// Each sub-command lists only what it uses; an option it would ignore, given anyway, is bad
+// input (exit 2) with one line naming the option and why, before anything is loaded or drawn.
+struct UnusedOption {
+    const char* option;
+    const char* args;  // the option as given, with a value where it takes one
+    const char* why;   // a word of the reason the message must give
+};
+
+void expectOnlyUsedOptions(const std::string& command, const std::string& tail,
+                           const std::vector<UnusedOption>& unused,
+                           const std::vector<const char*>& used) {
+    const Outcome help = run(command + " --help");
+    ASSERT_EQ(help.exitCode, 0) << help.out;
+    for (const char* option : used) EXPECT_TRUE(listsOption(help.out, option)) << option;
+    for (const UnusedOption& u : unused) {
+        EXPECT_FALSE(listsOption(help.out, u.option)) << command << " lists " << u.option;
+        const Outcome r =
+            run(command + " " + FACET_ASSETS_DIR + "/default.scene " + tail + " " + u.args);
+        EXPECT_EQ(r.exitCode, 2) << command << " " << u.args << ": " << r.out;
+        EXPECT_EQ(countLines(r.out), 1) << r.out;
+        EXPECT_NE(r.out.find(std::string(u.option) + " has no use here"), std::string::npos)
+            << r.out;
+        EXPECT_NE(r.out.find(u.why), std::string::npos) << r.out;
+    }
+}
+
+TEST_F(Cli, RenderListsEveryRenderOption) {
+    expectOnlyUsedOptions("render", "-o " + out("r.png"), {},
+                          {"--output", "--threads", "--subpixel-bits", "--supersample", "--view",
+                           "--msaa", "--frames", "--stats", "--write-scene", "--normals",
+                           "--legend", "--point-size", "--renderer"});
+}
+
+TEST_F(Cli, RenderGlListsOnlyWhatTheOpenGlTwinUses) {
+    expectOnlyUsedOptions("render-gl", "-o " + out("g.png"),
+                          {{"--threads", "--threads 2", "LP_NUM_THREADS"},
+                           {"--subpixel-bits", "--subpixel-bits 4", "sub-pixel grid"},
+                           {"--supersample", "--supersample 2", "one sample per pixel"},
+                           {"--view", "--view overdraw", "CPU engine"}},
+                          {"--output", "--msaa", "--frames", "--stats", "--normals", "--legend",
+                           "--mode", "--shader", "--texture", "--size"});
+}
+
+TEST_F(Cli, InspectListsOnlyWhatDecidesThePixel) {
+    expectOnlyUsedOptions("inspect", "3 3",
+                          {{"--output", "--output x.png", "writes no image"},
+                           {"--frames", "--frames 3", "times nothing"},
+                           {"--threads", "--threads 2", "one thread"},
+                           {"--stats", "--stats", "frame statistics"},
+                           {"--write-scene", "--write-scene x.scene", "writes no files"},
+                           {"--normals", "--normals", "overlays"},
+                           {"--normal-length", "--normal-length 0.5", "overlays"},
+                           {"--legend", "--legend", "overlays"},
+                           {"--point-size", "--point-size 3", "points"},
+                           {"--view", "--view overdraw", "facet render --view"}},
+                          {"--mode", "--shader", "--interp", "--supersample", "--msaa",
+                           "--subpixel-bits", "--truth-samples", "--size", "--eye"});
+    EXPECT_FALSE(fs::exists("x.scene"));
 }
 
 TEST_F(Cli, VersionPrintsTheProjectVersion) {

@@ -7,9 +7,12 @@
 // CMYK); tex_huffman_overflow.jpg is tex_jpeg_420 with a DHT whose 16 counts are 17 each (272
 // codes, more than the 256 a table holds: stb_image 2.27 writes past its size[257]).
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -18,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "facet/image_io.hpp"
 #include "facet/limits.hpp"
 #include "facet/texture.hpp"
 #include "io/image_decode.hpp"
@@ -187,6 +191,89 @@ TEST(ImageDecode, DamagedDataGivesClearErrors) {
     ASSERT_FALSE(header.ok());
     EXPECT_NE(header.error().message.find("JPEG image: its header is damaged"), std::string::npos)
         << header.error().what();
+}
+
+// A truncated or corrupt JPEG is an error, as a truncated PNG is: libjpeg only warns and makes up
+// the missing rows (a grey wall with exit 0 before). Real photographs, damaged on disk here.
+TEST(ImageDecode, TruncatedOrCorruptJpegIsAnErrorNamingTheFile) {
+    const std::string brick = shared("course/brick.jpg");
+    REQUIRE_SHARED_DATA(brick);
+    const std::vector<unsigned char> whole = readBytes(brick);
+    ASSERT_GT(whole.size(), 4000u);
+    ASSERT_TRUE(loadTexture(brick).ok());
+    const fs::path dir =
+        fs::temp_directory_path() / ("facet_jpeg_damage_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    auto write = [&dir](const std::string& name, const std::vector<unsigned char>& bytes) {
+        const fs::path path = dir / name;
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()),
+                   static_cast<std::streamsize>(bytes.size()));
+        return path.string();
+    };
+    for (const double kept : {0.5, 0.9, 0.999}) {
+        std::vector<unsigned char> cut = whole;
+        cut.resize(static_cast<std::size_t>(kept * static_cast<double>(whole.size())));
+        const std::string path = write("cut.jpg", cut);
+        const Result<Texture> t = loadTexture(path);
+        ASSERT_FALSE(t.ok()) << kept;
+        EXPECT_EQ(t.error().loc.file, path);
+        EXPECT_NE(t.error().what().find("damaged or truncated (libjpeg: Premature end of JPEG"),
+                  std::string::npos)
+            << t.error().what();
+    }
+    // An end-of-image marker written over the middle of the entropy-coded data.
+    std::vector<unsigned char> corrupt = whole;
+    for (std::size_t i = whole.size() / 2; i < whole.size() / 2 + 16; i += 2) {
+        corrupt[i] = 0xFF;
+        corrupt[i + 1] = 0xD9;
+    }
+    const Result<Texture> c = loadTexture(write("corrupt.jpg", corrupt));
+    ASSERT_FALSE(c.ok());
+    EXPECT_NE(c.error().what().find("Corrupt JPEG data"), std::string::npos) << c.error().what();
+    fs::remove_all(dir);
+}
+
+// The PNG writer (libpng, fastest level, Sub filter) loses nothing: what it writes decodes to
+// the frame's pixels, alpha dropped; its progress rises to 1; a cancel leaves no file behind.
+TEST(ImageDecode, WrittenPngDecodesToTheFramesPixels) {
+    Framebuffer frame;
+    ASSERT_TRUE(frame.resize(301, 203));
+    std::uint32_t state = 12345u;
+    for (std::size_t i = 0; i < frame.color.size(); ++i) {
+        state = state * 1664525u + 1013904223u;  // noise and flat runs, as in a render
+        frame.color[i] = (i / 301) % 3 == 0 ? 0xFF5C5C5Cu : (state | 0xFF000000u);
+    }
+    frame.color[7] &= 0x00FFFFFFu;  // a zero alpha is written opaque: PNGs are RGB
+    const fs::path dir =
+        fs::temp_directory_path() / ("facet_png_write_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string path = (dir / "frame.png").string();
+    std::vector<float> reports;
+    LoadControl control;
+    control.progress = [&reports](float f) { reports.push_back(f); };
+    ASSERT_TRUE(writePng(frame, path, &control));
+    ASSERT_FALSE(reports.empty());
+    EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
+    EXPECT_EQ(reports.back(), 1.0f);
+    const Result<Texture> back = loadTexture(path);
+    ASSERT_TRUE(back.ok()) << back.error().what();
+    std::vector<std::uint32_t> opaque = frame.color;
+    for (std::uint32_t& p : opaque) p |= 0xFF000000u;
+    EXPECT_EQ(back->level(0).texels, opaque);
+    const Result<std::string> bytes = encodePng(frame);
+    ASSERT_TRUE(bytes.ok());
+    const std::vector<unsigned char> file = readBytes(path);
+    EXPECT_TRUE(bytes.value() == std::string(file.begin(), file.end()));  // no dump of bytes
+
+    std::atomic<bool> cancel{true};
+    LoadControl stop;
+    stop.cancel = &cancel;
+    const Status cancelled = writePng(frame, (dir / "cancelled.png").string(), &stop);
+    ASSERT_FALSE(cancelled);
+    EXPECT_NE(cancelled.error().what().find("cancelled"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir / "cancelled.png"));
+    fs::remove_all(dir);
 }
 
 // Fuzz finding (a timeout): a 134-byte run-length TGA claiming 3855x3855 pixels; stb_image reads

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "facet/camera.hpp"
+#include "facet/limits.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_defaults.hpp"
 #include "facet/scene_io.hpp"
@@ -918,6 +919,42 @@ TEST(ViewerModels, TheUpAxisFramesOrbitsAndIsSavedWithTheScene) {
 namespace {
 
 // The simple shader's see-through patchwork is explained where the shader is chosen.
+// A frame the engine refuses (checkFrame) is not a crash or a silent black frame: the model keeps
+// the last image and says why (the window shows it over the image), until a frame draws again.
+TEST(ViewerModels, ARefusedRenderSaysWhyAndTheNextGoodOneClearsIt) {
+    ViewerModel m;
+    ASSERT_TRUE(m.load(std::string(FACET_ASSETS_DIR) + "/default.scene"));
+    m.prepareFrame(64, 48);
+    m.render();
+    EXPECT_EQ(m.refused, "");
+    const std::vector<std::uint32_t> drawn = m.frame.color;
+    ASSERT_EQ(drawn.size(), 64u * 48u);
+
+    // The largest frame with 4x4 supersampling, as the Render panel can ask: beyond memory.
+    m.settings.supersample = 4;
+    m.prepareFrame(kMaxImageSide, kMaxImageSide);
+    m.render();
+    EXPECT_NE(m.refused.find("16384x16384 frame at 4x4 supersampling needs"), std::string::npos)
+        << m.refused;
+    EXPECT_NE(m.refused.find("the limit is"), std::string::npos) << m.refused;
+    EXPECT_EQ(m.frame.color, drawn);  // the last image stays
+    EXPECT_EQ(m.stats.trianglesIn, 0u);
+
+    // A camera with eye == look (an orbit at distance 0, as a scene's pose could give).
+    m.settings.supersample = 1;
+    m.orbit.distance = 0.0;
+    m.orbitMoved = true;
+    m.prepareFrame(64, 48);
+    m.render();
+    EXPECT_NE(m.refused.find("camera:"), std::string::npos) << m.refused;
+
+    m.orbitEdited();  // clamps the distance back
+    m.prepareFrame(64, 48);
+    m.render();
+    EXPECT_EQ(m.refused, "");
+    EXPECT_GT(m.stats.trianglesIn, 0u);
+}
+
 TEST(ViewerModels, TheSimpleShaderSaysItHasNoDepthTest) {
     ViewerModel m;
     ASSERT_TRUE(m.load(std::string(FACET_ASSETS_DIR) + "/default.scene"));

@@ -43,6 +43,7 @@ void CompareView::renderSides(const Scene& scene, const RenderSettings& settings
     applyInterp(s, compare.right);
     Result<RenderStats> right = rightRenderer.render(scene, s, rightFrame);
     rightStats = right ? right.value() : RenderStats{};
+    refused = !left ? left.error().what() : !right ? right.error().what() : std::string();
 }
 
 const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings& settings,

@@ -72,6 +72,7 @@ int App::frame(Clock::time_point start, bool last) {
         const RenderResult& r = worker->wait(display);
         waited += ms(w0, Clock::now());
         model.stats = r.stats;
+        model.refused = r.refused;
         sides.leftStats = r.stats;
         sides.rightStats = r.rightStats;
         if (r.compared) sides.diff = r.diff;

@@ -75,10 +75,12 @@ void RenderWorker::loop() {
             r.rightStats = sides_.rightStats;
             r.diff = sides_.diff;
             r.compared = true;
+            r.refused = sides_.refused;
         } else {
             // A refused frame (checkFrame) keeps the last image, with no stats.
             Result<RenderStats> rendered = renderer_.render(scene_, settings_, frame_);
             r.stats = rendered ? rendered.value() : RenderStats{};
+            if (!rendered) r.refused = rendered.error().what();
             r.renderMs = ms(t0, Clock::now());
         }
         lock.lock();

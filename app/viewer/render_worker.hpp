@@ -28,6 +28,7 @@ struct RenderResult {
     bool compared = false;   ///< the job was a Compare job
     double renderMs = 0.0;   ///< engine time (both sides in Compare)
     double compareMs = 0.0;  ///< difference and composition time
+    std::string refused;     ///< why the engine drew nothing (checkFrame's message), or empty
 };
 
 /// Copies a job's times into a frame's: the engine's total, its stages (both sides summed in

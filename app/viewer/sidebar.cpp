@@ -181,6 +181,30 @@ void statsOverlay(App& app) {
     ImGui::End();
 }
 
+/// Why the engine drew nothing (a frame too large for memory, a camera it cannot use), in the
+/// middle of the image area for as long as it holds: the image under it is the last one drawn.
+void refusedOverlay(App& app) {
+    const std::string& why = app.model.refused;
+    if (why.empty()) return;
+    const Rect& image = app.work.layout.image;
+    ImGui::SetNextWindowPos(
+        ImVec2(static_cast<float>(image.x) + 0.5f * static_cast<float>(image.w),
+               static_cast<float>(image.y) + 0.5f * static_cast<float>(image.h)),
+        ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                        ImVec2(0.8f * static_cast<float>(image.w), 1e6f));
+    ImGui::SetNextWindowBgAlpha(0.9f);
+    if (ImGui::Begin("##refused", nullptr, kOverlay)) {
+        noteWindow(app, "refused");
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "Not drawn");
+        ImGui::TextUnformatted(why.c_str());
+        ImGui::TextDisabled("The image is the last one drawn; change the size or settings.");
+        ImGui::PopTextWrapPos();
+    }
+    ImGui::End();
+}
+
 /// The notice (a saved screenshot's path) at the bottom of the image area, for a few seconds.
 void noticeOverlay(App& app) {
     const Notice& n = app.work.notice;
@@ -322,6 +346,7 @@ void drawPanels(App& app) {
     accuracyWindow(app);
     inspectorWindow(app);
     noticeOverlay(app);
+    refusedOverlay(app);
     if (app.work.help) helpOverlay(app);
 }
 

@@ -152,9 +152,11 @@ const Camera& ViewerModel::prepareFrame(int windowWidth, int windowHeight) {
 }
 
 const Framebuffer& ViewerModel::render() {
-    // A refused frame (checkFrame: the camera, the size) keeps the last image, with no stats.
+    // A refused frame (checkFrame: the camera, the size) keeps the last image, with no stats
+    // and the reason, which the window shows over the image.
     Result<RenderStats> rendered = renderer.render(scene, settings, frame);
     stats = rendered ? rendered.value() : RenderStats{};
+    refused = rendered ? std::string() : rendered.error().what();
     return frame;
 }
 

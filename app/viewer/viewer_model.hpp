@@ -64,6 +64,9 @@ struct ViewerModel {
     Renderer renderer;  ///< keeps its scratch buffers from frame to frame
     Framebuffer frame;  ///< the last frame rendered
     RenderStats stats;  ///< what the last render did
+    /// Why the last render drew nothing (checkFrame's message: the camera, the frame's size or
+    /// memory), shown over the image; empty when it drew.
+    std::string refused;
 
     /// Loads a scene file or a bare mesh (a scene of kBareMeshWidth × kBareMeshHeight); on
     /// success it replaces the scene as adopt() does; on failure nothing changes and the error

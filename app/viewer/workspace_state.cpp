@@ -47,6 +47,7 @@ std::string workspaceStateText(const App& app) {
     const bool noticeShown =
         !w.notice.text.empty() && std::chrono::steady_clock::now() < w.notice.until;
     s << "notice " << (noticeShown ? w.notice.text : "") << "\n";
+    s << "refused " << app.model.refused << "\n";
     const LightMarker m = lightMarker(app.model.scene.camera, lightPosition(app),
                                       app.model.orbit.target, app.model.orbit.distance);
     const Camera& c = app.model.scene.camera;

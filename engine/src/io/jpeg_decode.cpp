@@ -2,11 +2,12 @@
 // owned by the caller of the one function that calls setjmp. Settings: the library's defaults,
 // JDCT_ISLOW and fancy upsampling, the closest to stb_image (docs/fuzzing.md, "Texture decoders",
 // has the measured difference). Progressive files are stopped after kMaxJpegScans scans, each being
-// a pass over the image; corrupt-data warnings are silent and the decoder fills what is missing, as
-// stb did.
+// a pass over the image. A truncated file or corrupt entropy-coded data is an error: libjpeg only
+// warns and invents the missing pixels (a grey wall with exit 0), so those warnings end the decode.
 
 #include <cstdio>  // jpeglib.h needs FILE and size_t first
 
+#include <jerror.h>  // the warning codes (JWRN_*)
 #include <jpeglib.h>
 
 #include <csetjmp>
@@ -40,7 +41,30 @@ JpegJob& jobOf(j_common_ptr cinfo) {
     std::longjmp(job.jump, 1);
 }
 
-void onMessage(j_common_ptr, int) {}  // warnings and traces: silent
+/// Warnings where libjpeg makes up pixels it could not read; the others (an unknown JFIF
+/// revision, a bad ICC marker, a scan repeated) leave the image as the file describes it.
+bool inventsPixels(int code) {
+    switch (code) {
+        case JWRN_JPEG_EOF:       // the file ends before the image does
+        case JWRN_HIT_MARKER:     // a data segment ends early
+        case JWRN_MUST_RESYNC:    // a restart marker missing: rows lost until the next
+        case JWRN_HUFF_BAD_CODE:  // entropy-coded data that decodes to nothing
+        case JWRN_NOT_SEQUENTIAL:  // scan parameters a baseline image cannot have
+            return true;
+        default:
+            return false;
+    }
+}
+
+// Traces (level >= 0) and harmless warnings are silent; damage ends the decode as an error.
+void onMessage(j_common_ptr cinfo, int level) {
+    if (level >= 0 || !inventsPixels(cinfo->err->msg_code)) return;
+    char text[JMSG_LENGTH_MAX] = {};
+    cinfo->err->format_message(cinfo, text);
+    JpegJob& job = jobOf(cinfo);
+    job.end.message = text;
+    std::longjmp(job.jump, 1);
+}
 
 void onProgress(j_common_ptr cinfo) {
     const auto* d = reinterpret_cast<j_decompress_ptr>(cinfo);
