@@ -21,9 +21,9 @@
 #include "accuracy/sweep_subpixel.hpp"
 #include "accuracy/sweep_table.hpp"
 #include "accuracy/sweep_view_angle.hpp"
-#include "bench/bench_chart.hpp"
-#include "bench/machine_info.hpp"
 #include "commands.hpp"
+#include "report/bench_chart.hpp"
+#include "report/machine_info.hpp"
 
 namespace facet::app {
 namespace {
