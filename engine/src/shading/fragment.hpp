@@ -58,11 +58,7 @@ struct RasterContext {
     RasterizeFn blocks = nullptr;
 };
 
-/// Rounds a colour to 8 bits per channel as spec §5 says; NaN becomes 0.
-inline std::uint32_t toByte(float c) {
-    const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
-    return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
-}
+/// Rounds a colour to 8 bits per channel as spec §5 says (facet::toByte); NaN becomes 0.
 inline std::uint32_t packColor(const glm::vec3& c) {
     return packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
 }
