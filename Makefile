@@ -90,13 +90,13 @@ fuzz: setup
 	cmake --build $(BUILD_FUZZ) --target fuzz_targets
 	bash scripts/run-fuzz.sh $(BUILD_FUZZ) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
-# Kernel micro-benchmarks (tests/kernels_bench.cpp) from the Release build. Each runs 5 times and
+# Kernel micro-benchmarks (tests/engine/kernels_bench.cpp) from the Release build. Each runs 5 times and
 # only the aggregates (mean, median, stddev, cv) are shown, since one run on a busy machine can be
 # far off; compare medians. BENCH_ARGS overrides, e.g. BENCH_ARGS=--benchmark_filter=shade/.
 BENCH_ARGS ?= --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 bench-kernels: setup $(BUILD)/build.ninja
 	cmake --build $(BUILD) --target kernels_bench
-	$(BUILD)/tests/kernels_bench $(BENCH_ARGS)
+	$(BUILD)/tests/engine/kernels_bench $(BENCH_ARGS)
 
 # The speed-against-accuracy charts of issue 6, committed under docs/: `facet accuracy` on the
 # course scenes and Spot (docs/accuracy/), and every stability sweep (docs/sweeps/); named with

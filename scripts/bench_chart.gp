@@ -1,4 +1,4 @@
-# The main chart of `facet bench --chart OUT.png` (app/bench/bench_chart.cpp runs it).
+# The main chart of `facet bench --chart OUT.png` (app/report/bench_chart.cpp runs it).
 # Set with -e: datafile, outfile, title, configs (space-separated names, one data block each,
 # in that order), t1 and tn (thread labels, e.g. "t=1", "t=2"; tn is "" with one thread count).
 # Data columns: x, case, engine t1, OpenGL t1, engine tn, OpenGL tn (ms; NaN when not measured).

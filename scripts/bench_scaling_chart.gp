@@ -1,4 +1,4 @@
-# The chart of `facet bench --scaling --chart OUT.png` (app/bench/bench_chart.cpp runs it).
+# The chart of `facet bench --scaling --chart OUT.png` (app/report/bench_chart.cpp runs it).
 # Set with -e: datafile, outfile, title, t1 and tn (thread labels; tn is "" with one count),
 # trilabel and pixlabel (the two x axes).
 # Data: block 0 against triangles, block 1 against Mpixels. Columns: x, engine t1, OpenGL t1,

@@ -5,7 +5,7 @@
 // where GL lets it: camera and pixel centres, top-left fill rule, LESS depth, the lighting
 // formula, repeat wrap, the engine's own mip chain. Where GL decides itself (8-bit texture
 // filter weights, the level of detail, the diamond-exit rule of lines) the pictures differ
-// within the tolerances tests/gl_twin_test.cpp states. Subdivided interpolation is drawn
+// within the tolerances tests/app/gl_twin_test.cpp states. Subdivided interpolation is drawn
 // perspective-correct.
 
 #include <cstddef>

@@ -1,6 +1,7 @@
 #pragma once
 // The frame: RGBA8 colour and float depth, plain buffers the viewer uploads as they are.
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -14,6 +15,20 @@ namespace facet {
 constexpr std::uint32_t packRgba(std::uint32_t r, std::uint32_t g, std::uint32_t b,
                                  std::uint32_t a = 255) {
     return r | (g << 8) | (b << 16) | (a << 24);
+}
+
+/// A colour channel in 8 bits (spec §5): clamped to [0,1] (NaN to 0), ×255, rounded half up; in
+/// float, as the renderers compute colours.
+constexpr std::uint32_t toByte(float c) {
+    const float v = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+    return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
+}
+
+/// The same rounding for a channel computed in double (colour maps, legends, heat maps): the
+/// product ×255 is rounded in double, so it can differ from the float one by a step at a tie.
+inline std::uint32_t toByte(double c) {
+    const double v = c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
+    return static_cast<std::uint32_t>(std::lround(v * 255.0));
 }
 
 /// Converts 0xRRGGBB (as written by users) to an opaque packed RGBA pixel.

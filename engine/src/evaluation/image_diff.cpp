@@ -58,8 +58,7 @@ ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* he
     lut[0] = packRgba(0, 0, 0);
     for (int e = 1; e < 256; ++e) {
         const glm::dvec3 c = viridis(static_cast<double>(e) / static_cast<double>(top));
-        auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(v * 255.0)); };
-        lut[static_cast<std::size_t>(e)] = packRgba(byte(c.r), byte(c.g), byte(c.b));
+        lut[static_cast<std::size_t>(e)] = packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
     }
     for (std::size_t i = 0; i < n; ++i) errors[i] = lut[errors[i]];
     return d;

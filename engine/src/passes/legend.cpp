@@ -46,10 +46,7 @@ void fillRect(Framebuffer& f, int x0, int y0, int w, int h, std::uint32_t rgba) 
 }
 
 std::uint32_t packUnit(const glm::dvec3& c) {
-    auto byte = [](double v) {
-        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-    };
-    return packRgba(byte(c.r), byte(c.g), byte(c.b));
+    return packRgba(toByte(c.r), toByte(c.g), toByte(c.b));
 }
 
 /// Width in pixels drawText() uses for `text` at `scale`.

@@ -69,6 +69,7 @@ struct RasterContext {
     RasterizeFn blocks = nullptr;
 };
 
+/// Rounds a colour to 8 bits per channel as spec §5 says (facet::toByte); NaN becomes 0.
 /// True when the shader tests and writes depth (LESS).
 constexpr bool depthTested(ShaderKind s) {
     return s != ShaderKind::Simple;

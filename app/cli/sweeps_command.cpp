@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/accuracy_report.hpp"
 #include "accuracy/run_output.hpp"
 #include "accuracy/sweep_camera.hpp"
 #include "accuracy/sweep_depth.hpp"
@@ -21,9 +20,10 @@
 #include "accuracy/sweep_subpixel.hpp"
 #include "accuracy/sweep_table.hpp"
 #include "accuracy/sweep_view_angle.hpp"
-#include "bench/bench_chart.hpp"
-#include "bench/machine_info.hpp"
 #include "commands.hpp"
+#include "report/accuracy_report.hpp"
+#include "report/bench_chart.hpp"
+#include "report/machine_info.hpp"
 
 namespace facet::app {
 namespace {

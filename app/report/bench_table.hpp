@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "bench_results.hpp"
-#include "bench_suite.hpp"
+#include "cli/bench/bench_suite.hpp"
 
 namespace facet::app {
 

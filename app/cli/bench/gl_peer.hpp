@@ -15,8 +15,8 @@
 #include <string>
 
 #include "bench_options.hpp"
-#include "bench_results.hpp"
 #include "facet/error.hpp"
+#include "report/bench_results.hpp"
 
 namespace facet::app {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "../bench/machine_info.hpp"
-#include "accuracy_methods.hpp"
+#include "accuracy/accuracy_methods.hpp"
 #include "facet/error.hpp"
+#include "machine_info.hpp"
 
 namespace facet::app {
 

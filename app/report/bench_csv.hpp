@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "bench_options.hpp"
 #include "bench_results.hpp"
-#include "bench_suite.hpp"
+#include "cli/bench/bench_options.hpp"
+#include "cli/bench/bench_suite.hpp"
 #include "facet/error.hpp"
 #include "machine_info.hpp"
 

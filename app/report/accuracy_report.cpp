@@ -9,7 +9,7 @@
 #include <fstream>
 #include <map>
 
-#include "../bench/bench_chart.hpp"
+#include "bench_chart.hpp"
 
 namespace facet::app {
 namespace fs = std::filesystem;

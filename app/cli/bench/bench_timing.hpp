@@ -5,10 +5,10 @@
 #include <functional>
 
 #include "bench_options.hpp"
-#include "bench_results.hpp"
 #include "bench_suite.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/render.hpp"
+#include "report/bench_results.hpp"
 
 namespace facet::app {
 

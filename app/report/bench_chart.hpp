@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "bench_results.hpp"
-#include "bench_suite.hpp"
+#include "cli/bench/bench_suite.hpp"
 #include "facet/error.hpp"
 
 namespace facet::app {

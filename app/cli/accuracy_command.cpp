@@ -13,10 +13,7 @@
 #include <vector>
 
 #include "accuracy/accuracy_methods.hpp"
-#include "accuracy/accuracy_report.hpp"
 #include "accuracy/run_output.hpp"
-#include "bench/bench_chart.hpp"
-#include "bench/machine_info.hpp"
 #include "commands.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/ground_truth.hpp"
@@ -24,6 +21,9 @@
 #include "facet/framebuffer.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
+#include "report/accuracy_report.hpp"
+#include "report/bench_chart.hpp"
+#include "report/machine_info.hpp"
 
 namespace facet::app {
 namespace {

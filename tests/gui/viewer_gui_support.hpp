@@ -144,7 +144,7 @@ class ViewerGui : public ::testing::Test {
                    kXvfb + kViewer + " " + args);
     }
 
-    /// Drives the viewer with xdotool through tests/viewer_drive.sh.
+    /// Drives the viewer with xdotool through tests/gui/viewer_drive.sh.
     Outcome drive(const std::string& scenario, const std::string& args = "--size " + kWindow1280,
                   const std::string& env = "") {
         return run("env " + env + " " + configEnv() + " timeout 90 " + kXvfb + "sh " + kDriver +

@@ -1,6 +1,6 @@
 // `facet bench`: times the engine against the OpenGL twin on a fixed suite (or, with --scaling,
 // on a triangle and a pixel sweep), at one thread and at all cores, and prints a table, a CSV
-// and a chart. The OpenGL side runs in child processes (app/bench/gl_peer.hpp).
+// and a chart. The OpenGL side runs in child processes (app/cli/bench/gl_peer.hpp).
 
 #include <chrono>
 #include <cstdio>
@@ -9,16 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "bench/bench_chart.hpp"
-#include "bench/bench_csv.hpp"
 #include "bench/bench_options.hpp"
 #include "bench/bench_suite.hpp"
-#include "bench/bench_table.hpp"
 #include "bench/bench_timing.hpp"
 #include "bench/gl_peer.hpp"
-#include "bench/machine_info.hpp"
 #include "commands.hpp"
 #include "facet/image_io.hpp"
+#include "report/bench_chart.hpp"
+#include "report/bench_csv.hpp"
+#include "report/bench_table.hpp"
+#include "report/machine_info.hpp"
 
 namespace facet::app {
 namespace {
