@@ -36,7 +36,12 @@ int main(int argc, char** argv) {
     facet::RenderSettings supersampled = base;
     supersampled.supersample = 2;
 
-    const facet::GroundTruth truth = facet::renderGroundTruth(scene, base, 4);
+    const facet::Result<facet::GroundTruth> made = facet::renderGroundTruth(scene, base, 4);
+    if (!made) {
+        std::fprintf(stderr, "ground truth: %s\n", made.error().message.c_str());
+        return 1;
+    }
+    const facet::GroundTruth& truth = *made;
     facet::Renderer renderer;
     facet::Framebuffer frame;
     const std::array<std::pair<const char*, facet::RenderSettings>, 3> methods{

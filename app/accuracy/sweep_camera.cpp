@@ -110,7 +110,12 @@ CameraPoint measure(const std::string& path, const std::string& lbl, int step, d
     p.clipped = stats.trianglesClipped;
     p.fragments = stats.fragments;
     const Clock::time_point t0 = Clock::now();
-    const reference::Image ref = reference::render(scene, s);
+    // The reference refuses what the engine refuses (checkFrame): then it is the background too,
+    // an empty draw onto the frame's size.
+    Result<reference::Image> made = reference::render(scene, s);
+    const reference::Image ref =
+        made ? std::move(made).value()
+             : reference::draw(reference::Input{}, s, scene.camera.width, scene.camera.height);
     p.refMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     p.diff = compareWithReference(fb, ref, s.shader, s.background);
     for (std::size_t i = 0; i < ref.depth.size(); ++i)

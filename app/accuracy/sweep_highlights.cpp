@@ -68,7 +68,7 @@ std::vector<HighlightPoint> sweepHighlights(const SweepOptions& options) {
             settings.background = 0x000000;
             settings.threads = 1;
             settings.lighting = Lighting::Phong;  // the ground truth lights per sample anyway
-            const GroundTruth truth = renderGroundTruth(scene, settings, options.samples);
+            const GroundTruth truth = renderGroundTruth(scene, settings, options.samples).value();
             HighlightPoint p{rings, s};
             settings.lighting = Lighting::Gouraud;
             p.gouraudMs =

@@ -193,13 +193,13 @@ void sweepScene(const std::string& name, const Scene& scene, const SweepOptions&
 
     // The exact coverage: which triangle the reference sees at each centre, unsnapped.
     const Scene ids = triangleIdScene(scene);
-    const reference::Image exact = reference::render(ids, idSettings(kMaxSubPixelBits));
+    const reference::Image exact = reference::render(ids, idSettings(kMaxSubPixelBits)).value();
     const std::vector<std::uint32_t> exactIds = exact.toRgba();
     std::size_t covered = 0;
     for (const double d : exact.depth) covered += std::isfinite(d) ? 1 : 0;
 
     const RenderSettings base = baseSettings(scene);
-    const GroundTruth truth = renderGroundTruth(scene, base, options.samples);
+    const GroundTruth truth = renderGroundTruth(scene, base, options.samples).value();
 
     // The crack check's input: the engine's clip positions (in double, rounded once, as
     // Renderer::render computes them) and the open boundary.

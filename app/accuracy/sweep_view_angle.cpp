@@ -119,8 +119,8 @@ std::vector<ViewAnglePoint> sweepViewAngle(const SweepOptions& options) {
             const double a = deg * std::numbers::pi / 180.0;
             scene.camera.eye = surface.look + glm::dvec3(0.0, -std::sin(a), std::cos(a));
             s.interp = Interp::Perspective;
-            const GroundTruth truth = renderGroundTruth(scene, s, options.samples);
-            const reference::Image ref = reference::render(scene, s);
+            const GroundTruth truth = renderGroundTruth(scene, s, options.samples).value();
+            const reference::Image ref = reference::render(scene, s).value();
             for (const Method& m : methods) {
                 options.report("view angle: " + std::string(surface.name) + " " + cell(deg) +
                                " deg " + m.name);

@@ -139,7 +139,7 @@ int runAccuracy(const AccuracyOptions& o) {
         const std::string where = format("[scene %zu/%zu] %s", k + 1, scenes.size(), name.c_str());
         const auto start = std::chrono::steady_clock::now();
         int tenth = -1;
-        const GroundTruth truth =
+        Result<GroundTruth> made =
             renderGroundTruth(scene, baseSettings(scene), o.samples, [&](double f) {
                 // Each tenth reaches a log; a terminal sees every step.
                 const int t = static_cast<int>(f * 10.0);
@@ -152,6 +152,12 @@ int runAccuracy(const AccuracyOptions& o) {
                 tenth = t;
                 return true;
             });
+        if (!made) {
+            progress.finish("");
+            std::fprintf(stderr, "%s: %s\n", o.scenes[k].c_str(), made.error().message.c_str());
+            return kBadInput;
+        }
+        const GroundTruth truth = std::move(made).value();
         progress.finish(format("%s: ground truth %dx%d at %dx%d samples in %.1f s", where.c_str(),
                                scene.camera.width, scene.camera.height, o.samples, o.samples,
                                secondsSince(start)));

@@ -203,7 +203,7 @@ TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
     facet::Framebuffer gl;
     const facet::Result<facet::GlStats> stats = t.renderer->render(*scene, settings, gl);
     ASSERT_TRUE(stats.ok()) << stats.error().what();
-    const facet::reference::Image ref = facet::reference::render(*scene, settings);
+    const facet::reference::Image ref = facet::reference::render(*scene, settings).value();
     ASSERT_EQ(gl.width, ref.width);
     ASSERT_EQ(gl.height, ref.height);
 

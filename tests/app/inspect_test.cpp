@@ -430,9 +430,9 @@ TEST(Inspect, ReferenceWindowIsTheWholeFramesPixels) {
     settings.lighting = Lighting::Phong;
     settings.interp = Interp::Subdivided;
     settings.subdivision = 8;
-    const reference::Image whole = reference::render(scene, settings);
+    const reference::Image whole = reference::render(scene, settings).value();
     const reference::Window window{16, 30, 40, 9};  // x a multiple of the subdivision
-    const reference::Image part = reference::renderWindow(scene, settings, window);
+    const reference::Image part = reference::renderWindow(scene, settings, window).value();
     ASSERT_EQ(part.width, window.width);
     ASSERT_EQ(part.height, window.height);
     int drawn = 0;
@@ -454,7 +454,7 @@ TEST(Inspect, GroundTruthOfOnePixelIsTheWholeTruthsPixel) {
     const Scene scene = loadShared("course/example_textured.scene", 64, 48);
     RenderSettings settings;
     settings.shader = ShaderKind::Texture;
-    const GroundTruth whole = renderGroundTruth(scene, settings, 4);
+    const GroundTruth whole = renderGroundTruth(scene, settings, 4).value();
     for (const auto& [x, y] : {std::pair{32, 24}, {10, 30}, {50, 12}, {0, 0}}) {
         const GroundTruth one = renderGroundTruthPixel(scene, settings, x, y, 4);
         ASSERT_EQ(one.width, 1);

@@ -120,7 +120,7 @@ TEST_P(LabRenderer, AgreesWithTheEngineAndTheReference) {
     facet::Renderer engine;
     facet::Framebuffer fast;
     engine.render(scene, settings, fast);
-    const facet::reference::Image ref = facet::reference::render(scene, settings);
+    const facet::reference::Image ref = facet::reference::render(scene, settings).value();
     const std::vector<std::uint32_t> refRgba = ref.toRgba();
     ASSERT_EQ(mine.color.size(), refRgba.size());
     ASSERT_EQ(fast.color.size(), refRgba.size());

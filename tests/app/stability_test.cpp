@@ -346,7 +346,7 @@ RenderStats expectMatchesReference(Renderer& renderer, const Scene& scene, const
     const Clock::time_point t0 = Clock::now();
     const RenderStats stats = renderer.render(scene, s, fb).value();
     EXPECT_LT(msSince(t0), kCaseBudgetMs) << label;
-    const reference::Image ref = reference::render(scene, s);
+    const reference::Image ref = reference::render(scene, s).value();
     const ReferenceDiff c = compareWithReference(fb, ref, s.shader, s.background);
     EXPECT_EQ(c.nanDepth, 0u) << label;
     EXPECT_EQ(c.coverageDiffers, 0u) << label << c.examples;

@@ -86,12 +86,12 @@ const AccuracyRow& row(const AccuracyReport& r, const std::string& method) {
 TEST(ReferenceProgress, ReachesOneInStepsAndLeavesTheImageAsItWas) {
     const Scene scene = tiltedQuad(80, 60);
     const RenderSettings settings = textured();
-    const reference::Image plain = reference::render(scene, settings);
+    const reference::Image plain = reference::render(scene, settings).value();
     std::vector<double> seen;
     const reference::Image tracked = reference::render(scene, settings, [&](double f) {
-        seen.push_back(f);
-        return true;
-    });
+                                         seen.push_back(f);
+                                         return true;
+                                     }).value();
     EXPECT_FALSE(tracked.cancelled);
     EXPECT_EQ(tracked.color, plain.color);  // bit-identical
     EXPECT_EQ(tracked.depth, plain.depth);
@@ -105,14 +105,14 @@ TEST(ReferenceProgress, FalseCancelsAndAGroundTruthComesBackEmpty) {
     const Scene scene = tiltedQuad(80, 60);
     int calls = 0;
     const GroundTruth truth = renderGroundTruth(scene, textured(), 4, [&](double f) {
-        ++calls;
-        return f < 0.3;
-    });
+                                  ++calls;
+                                  return f < 0.3;
+                              }).value();
     EXPECT_TRUE(truth.cancelled);
     EXPECT_EQ(truth.width, 0);
     EXPECT_TRUE(truth.color.empty());
     EXPECT_LT(calls, 100);  // stopped at about 30 %, not run to the end
-    const GroundTruth whole = renderGroundTruth(scene, textured(), 2);
+    const GroundTruth whole = renderGroundTruth(scene, textured(), 2).value();
     EXPECT_FALSE(whole.cancelled);
     EXPECT_EQ(whole.width, 80);
 }

@@ -156,7 +156,7 @@ TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     const facet::Scene* scene = facet::test::dollied(loaded, c.dolly, storage);
     const facet::RenderSettings settings = facet::test::settingsFor(c);
 
-    const facet::reference::Image ref = facet::reference::render(*scene, settings);
+    const facet::reference::Image ref = facet::reference::render(*scene, settings).value();
     facet::Renderer renderer;
     facet::Framebuffer fast;
     const facet::RenderStats stats = renderer.render(*scene, settings, fast).value();
@@ -231,7 +231,7 @@ TEST(SpotSeams, LitSpotMatchesTheWeldedReferenceWithin1Lsb) {
         facet::Renderer renderer;
         facet::Framebuffer fast;
         renderer.render(spot, settings, fast);
-        const facet::reference::Image ref = facet::reference::render(welded, settings);
+        const facet::reference::Image ref = facet::reference::render(welded, settings).value();
         const facet::ReferenceDiff r =
             facet::compareWithReference(fast, ref, settings.shader, settings.background);
         EXPECT_LE(r.maxColorDiff, 1) << facet::toString(lighting) << ": " << r.examples;

@@ -50,7 +50,7 @@ TEST(GroundTruth, FlatFullScreenTriangleIsItsColourExactly) {
     const glm::vec3 color{0.2f, 0.4f, 0.6f};
     const facet::Scene scene =
         triangleScene(12, 8, {-100.0, -100.0}, {300.0, -100.0}, {-100.0, 300.0}, color);
-    const GroundTruth truth = facet::renderGroundTruth(scene, facet::RenderSettings{}, 4);
+    const GroundTruth truth = facet::renderGroundTruth(scene, facet::RenderSettings{}, 4).value();
     ASSERT_EQ(truth.width, 12);
     ASSERT_EQ(truth.height, 8);
     EXPECT_EQ(truth.samples, 4);
@@ -71,7 +71,7 @@ TEST(GroundTruth, HalfPlaneEdgeGivesCoverageFractions) {
                                              {c - m * 50.0, -50.0}, {-100.0, 0.0}, {1, 1, 1});
     facet::RenderSettings settings;
     settings.background = 0x000000;
-    const GroundTruth truth = facet::renderGroundTruth(scene, settings, n);
+    const GroundTruth truth = facet::renderGroundTruth(scene, settings, n).value();
     int partial = 0;
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
@@ -177,7 +177,7 @@ TEST(GroundTruth, TexturedFacetPerspectiveBeatsAffine) {
     facet::RenderSettings settings;
     settings.shader = facet::ShaderKind::Texture;
     settings.filter = facet::TextureFilter::Trilinear;
-    const GroundTruth truth = facet::renderGroundTruth(scene.value(), settings, 4);
+    const GroundTruth truth = facet::renderGroundTruth(scene.value(), settings, 4).value();
 
     facet::Renderer renderer;
     facet::Framebuffer frame;

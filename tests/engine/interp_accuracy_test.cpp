@@ -37,7 +37,7 @@ Errors measureAll(const facet::Scene& scene, const char* label) {
     settings.shader = facet::ShaderKind::Texture;
     settings.filter = facet::TextureFilter::Bilinear;
     settings.interp = facet::Interp::Perspective;
-    const facet::reference::Image ref = facet::reference::render(scene, settings);
+    const facet::reference::Image ref = facet::reference::render(scene, settings).value();
     facet::Renderer renderer;
     facet::Framebuffer frame;
     auto errorOf = [&](facet::Interp interp, int n, const char* name) {

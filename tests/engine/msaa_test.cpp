@@ -87,7 +87,7 @@ void expectSamplesMatchReference(const Scene& scene, const RenderSettings& s,
     const facet::SampleBlock b = facet::sampleBlock(s.msaa);
     ASSERT_EQ(samples.width, scene.camera.width * b.x) << what;
     ASSERT_EQ(samples.height, scene.camera.height * b.y) << what;
-    const facet::reference::Image ref = facet::reference::renderSamples(scene, s);
+    const facet::reference::Image ref = facet::reference::renderSamples(scene, s).value();
     ASSERT_EQ(ref.width, samples.width) << what;
     const facet::ReferenceDiff d =
         facet::compareWithReference(samples, ref, s.shader, s.background);
@@ -100,7 +100,7 @@ void expectSamplesMatchReference(const Scene& scene, const RenderSettings& s,
     EXPECT_LE(d.maxColorDiff, 1) << what << d.examples;
     EXPECT_GE(d.comparedCovered, minCovered) << what;
     // And the resolved frames: the same box filter in 8 bits on both sides.
-    const facet::reference::Image resolved = facet::reference::render(scene, s);
+    const facet::reference::Image resolved = facet::reference::render(scene, s).value();
     const facet::ReferenceDiff r =
         facet::compareWithReference(frame, resolved, s.shader, s.background);
     EXPECT_EQ(r.coverageDiffers, 0u) << what << r.examples;
@@ -356,7 +356,7 @@ TEST(Msaa, ErrorFallsWithSamplesAndThreadsAgree) {
     const Scene scene = knot(160, 120);
     RenderSettings s;
     s.lighting = facet::Lighting::Gouraud;
-    const facet::GroundTruth truth = facet::renderGroundTruth(scene, s, 8);
+    const facet::GroundTruth truth = facet::renderGroundTruth(scene, s, 8).value();
     facet::Renderer renderer;
     double previous = 1e9;
     for (const int n : {1, 2, 4, 8}) {

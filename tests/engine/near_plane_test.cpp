@@ -52,7 +52,7 @@ TEST(NearPlane, CameraThroughTheBunnyStaysFiniteAndMatchesTheReference) {
             for (float d : fb.depth)
                 ASSERT_TRUE(d == kEmptyDepth || d >= 0.999f * near)
                     << "frame " << frame << " depth " << d;
-            const reference::Image ref = reference::render(scene, s);
+            const reference::Image ref = reference::render(scene, s).value();
             const ReferenceDiff c = compareWithReference(fb, ref, s.shader, s.background);
             EXPECT_EQ(c.coverageDiffers, 0u)
                 << "frame " << frame << " " << toString(interp) << c.examples;

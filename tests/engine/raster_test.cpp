@@ -269,7 +269,7 @@ TEST(Watertight, BunnyLeavesNoBackgroundPixelInsideItsSilhouette) {
     Renderer r;
     Framebuffer fb;
     r.render(*scene, s, fb);
-    const reference::Image ref = reference::render(*scene, s);
+    const reference::Image ref = reference::render(*scene, s).value();
     int inside = 0, holes = 0;
     for (std::size_t i = 0; i < fb.depth.size(); ++i) {
         if (!std::isfinite(ref.depth[i]) || ref.ambiguous[i]) continue;

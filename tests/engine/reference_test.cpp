@@ -222,10 +222,10 @@ TEST(Reference, ProjectedFrontFaceSurvivesCulling) {
     RenderSettings s = settingsFor(DrawMode::Solid);
     s.cullBackFaces = true;
     s.nearPlane = 0.01;
-    EXPECT_GT(coveredCount(facet::reference::render(scene, s)), 100);
+    EXPECT_GT(coveredCount(facet::reference::render(scene, s).value()), 100);
     mesh.indices = {0, 2, 1};
     scene.mesh = std::make_shared<const facet::Mesh>(mesh);
-    EXPECT_EQ(coveredCount(facet::reference::render(scene, s)), 0);
+    EXPECT_EQ(coveredCount(facet::reference::render(scene, s).value()), 0);
 }
 
 // Camera-space triangles on the floor plane Y = 1 that cross the camera plane Z = 0: every pixel
@@ -537,8 +537,10 @@ TEST(Reference, PhongEqualsGouraudOnAFlatTriangle) {
     scene.lighting.light = {{0.3, 0.2, -1.0, 0.0}, 1.0};
     scene.lighting.material = {0.2, 0.6, 0.0, 1.0};
     const double expected = 0.2 + 0.6 / std::sqrt(1.13);  // Ia·Ka + Id·Kd·(n·l)
-    const Image gouraud = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud));
-    const Image phong = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong));
+    const Image gouraud =
+        facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud)).value();
+    const Image phong =
+        facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong)).value();
     int n = 0;
     for (std::size_t i = 0; i < phong.color.size(); ++i) {
         ASSERT_EQ(std::isfinite(phong.depth[i]), std::isfinite(gouraud.depth[i]));
@@ -558,8 +560,10 @@ TEST(Reference, PhongShowsTheHighlightGouraudMisses) {
     facet::Scene scene = sceneWith(sphere, 64, 100.0);
     scene.lighting.light = {{0.0, 0.0, -5.0, 1.0}, 1.0};
     scene.lighting.material = {0.1, 0.4, 0.8, 60.0};
-    const Image gouraud = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud));
-    const Image phong = facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong));
+    const Image gouraud =
+        facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Gouraud)).value();
+    const Image phong =
+        facet::reference::render(scene, lit(DrawMode::Solid, Lighting::Phong)).value();
     double maxGouraud = 0.0, maxPhong = 0.0;
     for (std::size_t i = 0; i < phong.color.size(); ++i) {
         if (!std::isfinite(phong.depth[i])) continue;
@@ -572,9 +576,9 @@ TEST(Reference, PhongShowsTheHighlightGouraudMisses) {
 
     // Points take their vertex's own position and normal: Phong is Gouraud there.
     const Image gouraudPoints =
-        facet::reference::render(scene, lit(DrawMode::Vertices, Lighting::Gouraud));
+        facet::reference::render(scene, lit(DrawMode::Vertices, Lighting::Gouraud)).value();
     const Image phongPoints =
-        facet::reference::render(scene, lit(DrawMode::Vertices, Lighting::Phong));
+        facet::reference::render(scene, lit(DrawMode::Vertices, Lighting::Phong)).value();
     int drawn = 0;
     for (std::size_t i = 0; i < phongPoints.color.size(); ++i) {
         drawn += std::isfinite(phongPoints.depth[i]) ? 1 : 0;
@@ -852,7 +856,7 @@ TEST(Reference, NormalsDisplayDrawsRedSegments) {
     s.showNormals = true;
     s.normalLength = 0.2;
     const facet::Scene alone = sceneWith(floorAndWall(false), 65, 100.0);
-    const Image img = facet::reference::render(alone, s);
+    const Image img = facet::reference::render(alone, s).value();
     int red = 0;
     for (int y = 0; y < 65; ++y) {
         for (int x = 0; x < 65; ++x) red += isRed(img, x, y) ? 1 : 0;
@@ -864,20 +868,20 @@ TEST(Reference, NormalsDisplayDrawsRedSegments) {
         EXPECT_EQ(isRed(img, 49, y), y >= 29) << y;
     }
     s.showNormals = false;
-    EXPECT_EQ(coveredCount(facet::reference::render(alone, s)), 0);  // the floor is edge-on
+    EXPECT_EQ(coveredCount(facet::reference::render(alone, s).value()), 0);  // the floor is edge-on
 
     // Behind the wall the LESS test hides the segment; Simple draws it over; other segments
     // stay red, also after the Depth shader's mapping and in the other draw modes.
     s.showNormals = true;
     const facet::Scene scene = sceneWith(floorAndWall(true), 65, 100.0);
-    const Image painter = facet::reference::render(scene, s);
+    const Image painter = facet::reference::render(scene, s).value();
     for (int y = 28; y <= 32; ++y) {
         expectNear(colorAt(painter, 32, y), glm::dvec3(0.0, 0.0, 1.0));
         EXPECT_TRUE(isRed(painter, 12, y)) << y;
     }
     for (const ShaderKind shader : {ShaderKind::Simple, ShaderKind::Depth}) {
         s.shader = shader;
-        const Image img2 = facet::reference::render(scene, s);
+        const Image img2 = facet::reference::render(scene, s).value();
         EXPECT_EQ(isRed(img2, 32, 30), shader == ShaderKind::Simple);
         EXPECT_TRUE(isRed(img2, 12, 30));
         // The Depth shader mapped the wall (blue before) to viridis.
@@ -888,7 +892,7 @@ TEST(Reference, NormalsDisplayDrawsRedSegments) {
     s.shader = ShaderKind::Painter;
     for (const DrawMode mode : {DrawMode::Wireframe, DrawMode::Vertices}) {
         s.mode = mode;
-        const Image img2 = facet::reference::render(scene, s);
+        const Image img2 = facet::reference::render(scene, s).value();
         EXPECT_TRUE(isRed(img2, 12, 28));
         EXPECT_TRUE(isRed(img2, 12, 29));
     }

@@ -12,7 +12,9 @@
 
 #include "facet/debug_view.hpp"
 #include "facet/error.hpp"
+#include "facet/evaluation/ground_truth.hpp"
 #include "facet/limits.hpp"
+#include "facet/reference.hpp"
 #include "facet/render.hpp"
 
 using namespace facet;
@@ -176,4 +178,58 @@ TEST(RenderErrors, StatusTruthMeansSuccess) {
     const Status failed = Error{{"f.scene", 3}, "bad"};
     EXPECT_FALSE(failed);
     EXPECT_EQ(failed.error().what(), "f.scene:3: bad");
+}
+
+// The reference renderer and the ground truth refuse what the fast path refuses, with the same
+// message, before allocating: a user comparing against them gets an error value too.
+TEST(RenderErrors, TheReferenceAndTheGroundTruthRefuseWhatRenderRefuses) {
+    std::vector<Scene> refused;
+    for (int width : {-10, 0, kMaxImageSide + 1}) {
+        refused.push_back(triangleScene());
+        refused.back().camera.width = width;
+    }
+    refused.push_back(triangleScene());
+    refused.back().camera.look = refused.back().camera.eye;  // eye == look
+    refused.push_back(triangleScene());
+    refused.back().camera.eye.x = std::numeric_limits<double>::quiet_NaN();
+    for (const Scene& scene : refused) {
+        const std::string fast = renderError(scene);
+        const Result<reference::Image> ref = reference::render(scene, RenderSettings{});
+        ASSERT_FALSE(ref) << fast;
+        EXPECT_EQ(ref.error().what(), fast);
+        const Result<reference::Image> samples = reference::renderSamples(scene, RenderSettings{});
+        ASSERT_FALSE(samples) << fast;
+        EXPECT_EQ(samples.error().what(), fast);
+        const Result<GroundTruth> truth = renderGroundTruth(scene, RenderSettings{}, 2);
+        ASSERT_FALSE(truth) << fast;
+        EXPECT_EQ(truth.error().what(), fast);
+        EXPECT_EQ(renderGroundTruthPixel(scene, RenderSettings{}, 0, 0, 2).width, 0);
+    }
+}
+
+TEST(RenderErrors, TheGroundTruthRefusesAnImageBeyondTheReferencesMemory) {
+    Scene scene = triangleScene();
+    scene.camera = resizedCamera(scene.camera, kMaxImageSide, kMaxImageSide);
+    // 16384² at 16×16 samples would be 2.3 TB of doubles: refused before allocating.
+    const Result<GroundTruth> truth = renderGroundTruth(scene, RenderSettings{}, 16);
+    ASSERT_FALSE(truth);
+    EXPECT_TRUE(has(truth.error().what(), "ground truth at 16x16 samples")) << truth.error().what();
+    EXPECT_TRUE(has(truth.error().what(), "the limit is 8")) << truth.error().what();
+    // A small frame at the same samples is fine.
+    EXPECT_TRUE(renderGroundTruth(triangleScene(), RenderSettings{}, 16));
+}
+
+TEST(RenderErrors, AReferenceWindowOutsideTheFrameIsAnError) {
+    const Scene scene = triangleScene();
+    for (const reference::Window w :
+         {reference::Window{0, 0, 0, 1}, reference::Window{-1, 0, 2, 2},
+          reference::Window{60, 0, 8, 1}, reference::Window{0, 47, 1, 2}}) {
+        const Result<reference::Image> r = reference::renderWindow(scene, RenderSettings{}, w);
+        ASSERT_FALSE(r) << w.x << "," << w.y << " " << w.width << "x" << w.height;
+        EXPECT_TRUE(has(r.error().what(), "is not inside the 64x48 frame")) << r.error().what();
+    }
+    const Result<reference::Image> inside =
+        reference::renderWindow(scene, RenderSettings{}, {56, 40, 8, 8});
+    ASSERT_TRUE(inside);
+    EXPECT_EQ(inside->width, 8);
 }

@@ -90,7 +90,7 @@ TEST(Supersample, CoverageIsTheGroundTruthsAtTheSameSamples) {
         renderer.render(scene, s, frame);
         ASSERT_EQ(frame.width, 24);
         ASSERT_EQ(frame.height, 16);
-        const facet::GroundTruth truth = facet::renderGroundTruth(scene, s, n);
+        const facet::GroundTruth truth = facet::renderGroundTruth(scene, s, n).value();
         int partial = 0;
         for (std::size_t i = 0; i < frame.color.size(); ++i) {
             const int got = static_cast<int>((frame.color[i] >> 8) & 0xFF);
@@ -109,7 +109,7 @@ TEST(Supersample, ErrorAgainstGroundTruthFallsWithSamples) {
     const Scene scene = knot();
     RenderSettings s;
     s.lighting = facet::Lighting::Phong;
-    const facet::GroundTruth truth = facet::renderGroundTruth(scene, s, 8);
+    const facet::GroundTruth truth = facet::renderGroundTruth(scene, s, 8).value();
     facet::Renderer renderer;
     double previous = 1e9;
     for (int n : {1, 2, 4}) {

@@ -21,6 +21,10 @@ constexpr double kGroundTruthShare = 0.8;
 
 // Thrown out of the measurement when Cancel was pressed.
 struct Cancelled {};
+/// The ground truth refused the frame (its camera, size or memory): the message says why.
+struct Refused {
+    std::string why;
+};
 
 std::string percent(double fraction) {
     char buf[32];
@@ -179,10 +183,12 @@ void AccuracyJob::run(const Request& request) {
             app::accuracyMethods(scene, request.view.settings), request.samples, &report->leftOut);
 
         const auto t0 = Clock::now();
-        const GroundTruth truth =
+        Result<GroundTruth> made =
             renderGroundTruth(scene, request.view.settings, request.samples, [this](double f) {
                 return progress(kGroundTruthShare * f, "ground truth " + percent(f));
             });
+        if (!made) throw Refused{made.error().message};
+        const GroundTruth truth = std::move(made).value();
         report->groundTruthSeconds = ms(t0, Clock::now()) / 1000.0;
         if (truth.cancelled || cancel_) throw Cancelled{};
 
@@ -238,6 +244,8 @@ void AccuracyJob::run(const Request& request) {
         return;
     } catch (const Cancelled&) {
         message = "Cancelled.";
+    } catch (const Refused& r) {
+        message = "No ground truth: " + r.why;
     } catch (const std::bad_alloc&) {
         message = "Out of memory: lower the samples or the window size.";
     } catch (const std::exception& e) {

@@ -11,8 +11,10 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "facet/error.hpp"
 #include "facet/limits.hpp"  // kMaxImageSide
 #include "facet/scene.hpp"
+#include "facet/settings.hpp"
 
 namespace facet {
 
@@ -41,5 +43,17 @@ glm::dvec3 projectToPixel(const Camera& camera, const glm::dvec3& world);
 
 /// Validates a camera as spec §1 requires; returns an explanation or empty on success.
 std::string checkCamera(const Camera& camera);
+
+/// Near distance for a draw: the setting when positive, else 1e-3 of the mesh's bounding box
+/// diagonal (spec §4, "a small fraction of the scene's size"). The fast and the reference path
+/// both use it.
+double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh);
+
+/// Why a frame from `camera` cannot be rendered with `settings`: the camera is invalid
+/// (checkCamera: non-finite, eye == look, y hint parallel, focal ≤ 0), its size is outside
+/// 1…kMaxImageSide, or its buffers (with supersampling and MSAA) exceed kMaxFrameBytes
+/// (limits.hpp). Success otherwise. Renderer::render and reference::render check with it before
+/// allocating anything.
+Status checkFrame(const Camera& camera, const RenderSettings& settings);
 
 }  // namespace facet

@@ -52,4 +52,18 @@ std::optional<std::string> frameMemoryProblem(int width, int height, int supersa
 /// Why a mesh of `vertices` and `triangles` would exceed kMaxMeshBytes, or nothing.
 std::optional<std::string> meshMemoryProblem(std::uint64_t vertices, std::uint64_t triangles);
 
+/// An image of width × height (1…kMaxImageSide each) whose buffers at `supersample` and `msaa`
+/// fit in kMaxFrameBytes; otherwise the error says which limit and the numbers.
+Status checkImageSize(int width, int height, int supersample, int msaa = 1);
+
+/// Largest memory the reference renderer's image may take (spec §12): 8 GiB. It keeps colour and
+/// depth in double per sample, so a ground truth at 8×8 samples of a 1280×720 frame takes 2 GiB.
+inline constexpr std::uint64_t kMaxReferenceBytes = std::uint64_t{8} << 30;
+/// Bytes the reference renderer keeps per sample: colour (three doubles), depth (a double) and
+/// the ambiguity flag.
+inline constexpr std::uint64_t kReferenceBytesPerSample = 3 * 8 + 8 + 1;
+/// Why a reference image of width × height pixels with `samples` samples each cannot be made
+/// within kMaxReferenceBytes (or a side below 1), or success.
+Status checkReferenceImage(int width, int height, int samples = 1);
+
 }  // namespace facet

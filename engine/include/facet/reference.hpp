@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "facet/error.hpp"
 #include "facet/lighting.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
@@ -71,8 +72,11 @@ glm::dvec4 projectPoint(const Camera& camera, const glm::dvec3& world);
 std::vector<glm::dvec4> projectNormals(const Scene& scene, const RenderSettings& settings);
 
 /// Renders the scene at the camera's size with the given settings: builds every Input stream
-/// from the scene (Gouraud colours lit per vertex, normals, uvs, the normals display).
-Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress = {});
+/// from the scene (Gouraud colours lit per vertex, normals, uvs, the normals display). An error
+/// (checkFrame's message, or the reference image's memory beyond kMaxReferenceBytes) instead of
+/// an image for a refused camera or size; nothing is allocated then.
+Result<Image> render(const Scene& scene, const RenderSettings& settings,
+                     const Progress& progress = {});
 
 /// A rectangle of an image's pixels: columns [x, x + width), rows [y, y + height).
 struct Window {
@@ -88,11 +92,13 @@ struct Window {
 /// pixels. Rule 11's Subdivided spans start at the window's column 0, so for Subdivided N,
 /// window.x must be a multiple of N for the frame's values; the Depth shader's colours map the
 /// window's depth range, not the frame's.
-Image renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
-                   const Progress& progress = {});
+/// An error for an invalid camera, a window that is empty or outside the frame, or beyond
+/// kMaxReferenceBytes.
+Result<Image> renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
+                           const Progress& progress = {});
 
-/// render()'s image of samples, before the resolve (drawSamples()).
-Image renderSamples(const Scene& scene, const RenderSettings& settings);
+/// render()'s image of samples, before the resolve (drawSamples()); refuses what render() does.
+Result<Image> renderSamples(const Scene& scene, const RenderSettings& settings);
 
 /// Draws clip-space geometry onto a background-filled image of the given size (multisampled
 /// when settings.msaa > 1 in Solid mode: drawSamples(), then resolveSamples()).

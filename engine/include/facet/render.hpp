@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "facet/camera.hpp"  // checkFrame, resolveNearPlane
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/lighting.hpp"
@@ -63,16 +64,6 @@ struct RenderStats {
     double frontEndMs = 0.0, binningMs = 0.0;
     std::string_view varyingNames;  ///< what they are, e.g. "depth rgb uv" (static storage)
 };
-
-/// Near distance for a draw: the setting when positive, else 1e-3 of the mesh's bounding box
-/// diagonal (spec §4, "a small fraction of the scene's size").
-double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh);
-
-/// Why a frame from `camera` cannot be rendered with `settings`: the camera is invalid
-/// (checkCamera: non-finite, eye == look, y hint parallel, focal ≤ 0), its size is outside
-/// 1…kMaxImageSide, or its buffers (with supersampling and MSAA) exceed kMaxFrameBytes
-/// (limits.hpp). Success otherwise. Renderer::render checks with it before allocating anything.
-Status checkFrame(const Camera& camera, const RenderSettings& settings);
 
 /// Renders frames; keeps scratch buffers so a steady frame size allocates nothing per frame.
 class Renderer {

@@ -19,9 +19,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
 
 #include "facet/camera.hpp"
+#include "facet/limits.hpp"
 #include "facet/reference.hpp"
+#include "reference/scene_render.hpp"
 
 namespace facet {
 
@@ -81,14 +84,26 @@ Scene bigScene(const Scene& scene, int n) {
 
 }  // namespace
 
-GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings, int samples,
-                              const GroundTruthProgress& progress) {
+Result<GroundTruth> renderGroundTruth(const Scene& scene, const RenderSettings& settings,
+                                      int samples, const GroundTruthProgress& progress) {
     const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
+    const RenderSettings truthSettings = groundTruthSettings(settings);
+    // The frame's own camera and size as the renderers check them; then the n² image's memory,
+    // since its camera may be past kMaxImageSide (1280 px at 16 samples is 20480).
+    RenderSettings frameSettings = truthSettings;
+    frameSettings.supersample = 1;
+    if (Status st = checkFrame(scene.camera, frameSettings); !st) return st.error();
+    if (!scene.mesh) return Error{{}, "the scene has no mesh"};
+    if (Status st = checkReferenceImage(scene.camera.width * n, scene.camera.height * n); !st)
+        return Error{{},
+                     "ground truth at " + std::to_string(n) + "x" + std::to_string(n) +
+                         " samples: " + st.error().message};
     // The reference render is nearly all of the time; the average after it is the last 1 %.
     reference::Progress renderProgress;
     if (progress) renderProgress = [&progress](double f) { return progress(0.99 * f); };
-    const reference::Image image =
-        reference::render(bigScene(scene, n), groundTruthSettings(settings), renderProgress);
+    const Scene big = bigScene(scene, n);
+    const reference::Image image = reference::detail::renderWindowUnchecked(
+        big, truthSettings, {0, 0, big.camera.width, big.camera.height}, renderProgress);
     if (image.cancelled) {
         GroundTruth truth;
         truth.cancelled = true;
@@ -102,8 +117,9 @@ GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings
 GroundTruth renderGroundTruthPixel(const Scene& scene, const RenderSettings& settings, int x, int y,
                                    int samples) {
     if (x < 0 || y < 0 || x >= scene.camera.width || y >= scene.camera.height) return {};
+    if (!checkFrame(scene.camera, RenderSettings{}) || !scene.mesh) return {};
     const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
-    const reference::Image image = reference::renderWindow(
+    const reference::Image image = reference::detail::renderWindowUnchecked(
         bigScene(scene, n), groundTruthSettings(settings), {x * n, y * n, n, n});
     return averageBlocks(image, n, 1, 1);
 }

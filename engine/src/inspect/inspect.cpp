@@ -221,7 +221,13 @@ void addReference(const Scene& scene, const RenderSettings& settings, PixelHisto
         const int n = std::clamp(s.subdivision, kMinSubdivision, kMaxSubdivision);
         x0 = h.x / n * n;
     }
-    const reference::Image ref = reference::renderWindow(scene, s, {x0, h.y, h.x - x0 + 1, 1});
+    const Result<reference::Image> window =
+        reference::renderWindow(scene, s, {x0, h.y, h.x - x0 + 1, 1});
+    if (!window) {
+        h.notes.push_back("no reference value: " + window.error().message);
+        return;
+    }
+    const reference::Image& ref = *window;
     const auto i = static_cast<std::size_t>(h.x - x0);
     h.hasReference = true;
     h.referenceColor = ref.color[i];

@@ -70,12 +70,6 @@ Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
-double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh) {
-    if (settings.nearPlane > 0.0) return settings.nearPlane;
-    const double diagonal = computeBounds(mesh).diagonal();
-    return diagonal > 0.0 ? 1e-3 * diagonal : 1e-3;
-}
-
 namespace {
 
 /// Counts coverage instead of shading (fill-rule tests and overdraw views).
@@ -145,19 +139,6 @@ int clampedSubPixelBits(const RenderSettings& settings) {
     return std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
 }
 
-/// An image of width × height (1…kMaxImageSide each) whose buffers at `supersample` and `msaa`
-/// fit in kMaxFrameBytes.
-Status checkImageSize(int width, int height, int supersample, int msaa) {
-    if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide)
-        return Error{{},
-                     "image size must be 1.." + std::to_string(kMaxImageSide) +
-                         " pixels in each direction, got " + std::to_string(width) + "x" +
-                         std::to_string(height)};
-    if (auto problem = frameMemoryProblem(width, height, supersample, msaa))
-        return Error{{}, *problem};
-    return {};
-}
-
 /// A frame draw() may draw into: a size checkImageSize accepts, and both planes that size.
 Status checkFramebuffer(const Framebuffer& frame, const RenderSettings& settings) {
     if (Status st = checkImageSize(frame.width, frame.height, 1, settings.msaa); !st) return st;
@@ -172,20 +153,6 @@ Status checkFramebuffer(const Framebuffer& frame, const RenderSettings& settings
 }
 
 }  // namespace
-
-Status checkFrame(const Camera& camera, const RenderSettings& settings) {
-    if (std::string problem = checkCamera(camera); !problem.empty()) {
-        // The size has its own message with the numbers; the rest are the camera's.
-        if (camera.width < 1 || camera.width > kMaxImageSide || camera.height < 1 ||
-            camera.height > kMaxImageSide)
-            return checkImageSize(camera.width, camera.height, 1, 1);
-        return Error{{}, "camera: " + problem};
-    }
-    const int supersample =
-        settings.mode == DrawMode::Solid ? std::clamp(settings.supersample, 1, kMaxSupersample) : 1;
-    const int msaa = settings.mode == DrawMode::Solid ? settings.msaa : 1;
-    return checkImageSize(camera.width, camera.height, supersample, msaa);
-}
 
 RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& settings,
                                  Framebuffer& frame) {

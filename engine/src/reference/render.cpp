@@ -7,11 +7,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/lighting.hpp"
+#include "facet/limits.hpp"
+#include "facet/multisample.hpp"
 #include "facet/normals.hpp"
 #include "facet/reference.hpp"
-#include "facet/render.hpp"
+#include "reference/scene_render.hpp"
 
 namespace facet::reference {
 
@@ -107,18 +110,61 @@ Image withSceneInput(const Scene& scene, const RenderSettings& settings, const W
 
 }  // namespace
 
-Image render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
-    return renderWindow(scene, settings, wholeFrame(scene), progress);
+namespace {
+
+/// Samples per pixel of the reference image the settings draw (multisampling in Solid mode).
+int referenceSamples(const RenderSettings& settings) {
+    return settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
 }
 
-Image renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
-                   const Progress& progress) {
+/// checkFrame() for the reference, which does not supersample, then its own image's memory.
+Status checkSceneFrame(const Scene& scene, const RenderSettings& settings) {
+    RenderSettings one = settings;
+    one.supersample = 1;
+    if (Status st = checkFrame(scene.camera, one); !st) return st;
+    if (!scene.mesh) return Error{{}, "the scene has no mesh"};
+    return checkReferenceImage(scene.camera.width, scene.camera.height, referenceSamples(settings));
+}
+
+}  // namespace
+
+namespace detail {
+
+Image renderWindowUnchecked(const Scene& scene, const RenderSettings& settings,
+                            const Window& window, const Progress& progress) {
     return withSceneInput(scene, settings, window, [&](const Input& input, int width, int height) {
         return draw(input, settings, width, height, progress);
     });
 }
 
-Image renderSamples(const Scene& scene, const RenderSettings& settings) {
+}  // namespace detail
+
+Result<Image> render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
+    if (Status st = checkSceneFrame(scene, settings); !st) return st.error();
+    return detail::renderWindowUnchecked(scene, settings, wholeFrame(scene), progress);
+}
+
+Result<Image> renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
+                           const Progress& progress) {
+    if (Status st = checkFrame(scene.camera, RenderSettings{}); !st) return st.error();
+    if (!scene.mesh) return Error{{}, "the scene has no mesh"};
+    if (window.width < 1 || window.height < 1 || window.x < 0 || window.y < 0 ||
+        window.x > scene.camera.width - window.width ||
+        window.y > scene.camera.height - window.height)
+        return Error{{},
+                     "window " + std::to_string(window.width) + "x" +
+                         std::to_string(window.height) + " at (" + std::to_string(window.x) + ", " +
+                         std::to_string(window.y) + ") is not inside the " +
+                         std::to_string(scene.camera.width) + "x" +
+                         std::to_string(scene.camera.height) + " frame"};
+    if (Status st = checkReferenceImage(window.width, window.height, referenceSamples(settings));
+        !st)
+        return st.error();
+    return detail::renderWindowUnchecked(scene, settings, window, progress);
+}
+
+Result<Image> renderSamples(const Scene& scene, const RenderSettings& settings) {
+    if (Status st = checkSceneFrame(scene, settings); !st) return st.error();
     return withSceneInput(scene, settings, wholeFrame(scene),
                           [&](const Input& input, int width, int height) {
                               return drawSamples(input, settings, width, height);

@@ -1,9 +1,13 @@
 #include "facet/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <glm/geometric.hpp>
+
+#include "facet/limits.hpp"
+#include "passes/supersample.hpp"  // kMaxSupersample
 
 namespace facet {
 
@@ -77,6 +81,27 @@ Camera resizedCamera(const Camera& camera, int width, int height, KeepFov keep) 
     c.width = width;
     c.height = height;
     return c;
+}
+
+double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh) {
+    if (settings.nearPlane > 0.0) return settings.nearPlane;
+    const double diagonal = computeBounds(mesh).diagonal();
+    return diagonal > 0.0 ? 1e-3 * diagonal : 1e-3;
+}
+
+Status checkFrame(const Camera& camera, const RenderSettings& settings) {
+    if (std::string problem = checkCamera(camera); !problem.empty()) {
+        // The size has its own message with the numbers; the rest are the camera's.
+        if (camera.width < 1 || camera.width > kMaxImageSide || camera.height < 1 ||
+            camera.height > kMaxImageSide)
+            return checkImageSize(camera.width, camera.height, 1, 1);
+        return Error{{}, "camera: " + problem};
+    }
+    const int supersample = settings.mode == DrawMode::Solid
+                                ? std::clamp(settings.supersample, 1, detail::kMaxSupersample)
+                                : 1;
+    const int msaa = settings.mode == DrawMode::Solid ? settings.msaa : 1;
+    return checkImageSize(camera.width, camera.height, supersample, msaa);
 }
 
 }  // namespace facet

@@ -55,4 +55,33 @@ std::optional<std::string> meshMemoryProblem(std::uint64_t vertices, std::uint64
            std::to_string(kBytesPerTriangle) + " per triangle)";
 }
 
+Status checkImageSize(int width, int height, int supersample, int msaa) {
+    if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide)
+        return Error{{},
+                     "image size must be 1.." + std::to_string(kMaxImageSide) +
+                         " pixels in each direction, got " + std::to_string(width) + "x" +
+                         std::to_string(height)};
+    if (auto problem = frameMemoryProblem(width, height, supersample, msaa))
+        return Error{{}, *problem};
+    return {};
+}
+
+Status checkReferenceImage(int width, int height, int samples) {
+    if (width < 1 || height < 1)
+        return Error{{},
+                     "image size must be at least 1x1 pixels, got " + std::to_string(width) + "x" +
+                         std::to_string(height)};
+    // Sides up to a ground truth's 16 × kMaxImageSide: the products below stay far from 2^64.
+    const std::uint64_t bytes =
+        static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
+        static_cast<std::uint64_t>(std::max(samples, 1)) * kReferenceBytesPerSample;
+    if (bytes <= kMaxReferenceBytes) return {};
+    return Error{{},
+                 "a reference image of " + std::to_string(width) + "x" + std::to_string(height) +
+                     " pixels" +
+                     (samples > 1 ? " with " + std::to_string(samples) + " samples each" : "") +
+                     " needs " + gib(bytes) + "; the limit is " + gib(kMaxReferenceBytes) +
+                     " (choose a smaller size or fewer samples)"};
+}
+
 }  // namespace facet

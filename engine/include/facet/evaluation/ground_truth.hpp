@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "facet/error.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
@@ -43,15 +44,17 @@ RenderSettings groundTruthSettings(const RenderSettings& settings);
 
 /// Renders the scene with groundTruthSettings() at samples×samples sub-samples per pixel, box
 /// filtered. `samples` is clamped to 1…kMaxGroundTruthSamples. With `progress`, a render it
-/// cancels returns an empty GroundTruth with `cancelled` set.
-GroundTruth renderGroundTruth(const Scene& scene, const RenderSettings& settings,
-                              int samples = kDefaultGroundTruthSamples,
-                              const GroundTruthProgress& progress = {});
+/// cancels returns an empty GroundTruth with `cancelled` set. An error (checkFrame's for the
+/// frame's camera and size, or the supersampled image beyond kMaxReferenceBytes) instead.
+Result<GroundTruth> renderGroundTruth(const Scene& scene, const RenderSettings& settings,
+                                      int samples = kDefaultGroundTruthSamples,
+                                      const GroundTruthProgress& progress = {});
 
 /// The ground truth of pixel (x, y) alone, a 1×1 GroundTruth: the reference renders only that
 /// pixel's samples×samples sub-samples (reference::renderWindow), so it costs the triangles'
 /// setup, not a whole frame. Equal to renderGroundTruth()'s pixel (x, y), except with the Depth
-/// shader, whose colours then map the pixel's own depth range. Empty (width 0) outside the image.
+/// shader, whose colours then map the pixel's own depth range. Empty (width 0) outside the image
+/// or for a camera checkFrame() refuses.
 GroundTruth renderGroundTruthPixel(const Scene& scene, const RenderSettings& settings, int x, int y,
                                    int samples = kDefaultGroundTruthSamples);
 
