@@ -17,7 +17,6 @@
 #include "facet/framebuffer.hpp"
 #include "facet/lighting.hpp"
 #include "facet/normals.hpp"
-#include "facet/render.hpp"
 #include "facet/texture.hpp"
 #include "reference/samplers.hpp"
 
