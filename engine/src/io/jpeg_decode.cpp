@@ -45,10 +45,10 @@ JpegJob& jobOf(j_common_ptr cinfo) {
 /// revision, a bad ICC marker, a scan repeated) leave the image as the file describes it.
 bool inventsPixels(int code) {
     switch (code) {
-        case JWRN_JPEG_EOF:       // the file ends before the image does
-        case JWRN_HIT_MARKER:     // a data segment ends early
-        case JWRN_MUST_RESYNC:    // a restart marker missing: rows lost until the next
-        case JWRN_HUFF_BAD_CODE:  // entropy-coded data that decodes to nothing
+        case JWRN_JPEG_EOF:        // the file ends before the image does
+        case JWRN_HIT_MARKER:      // a data segment ends early
+        case JWRN_MUST_RESYNC:     // a restart marker missing: rows lost until the next
+        case JWRN_HUFF_BAD_CODE:   // entropy-coded data that decodes to nothing
         case JWRN_NOT_SEQUENTIAL:  // scan parameters a baseline image cannot have
             return true;
         default:
