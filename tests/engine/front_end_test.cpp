@@ -184,8 +184,10 @@ TEST_P(VertexPass, HandsOnWhatThePerCornerFrontEndDoes) {
         culled += a.stats.trianglesCulled;
         rejected += a.stats.trianglesRasterized == 0 ? 1 : 0;
     }
-    // The cases reach every stage: none of the comparisons above was vacuous.
-    EXPECT_GT(emitted, 300u);
+    // The cases reach every stage: none of the comparisons above was vacuous. (Triangles whose
+    // small box holds no pixel centre are no longer emitted: 280 of the cases are in the Clang
+    // sanitizer build; the GCC build emits over 300.)
+    EXPECT_GT(emitted, 200u);
     EXPECT_GT(clipped, 100u);
     EXPECT_GT(rejected, 50u);
     if (c.cull) {
