@@ -18,16 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using facet::test::sharedData;
+using facet_test::countOf;
 
+/// The course's folder of scenes, meshes and textures under the shared data.
 std::string courseDir() {
     return sharedData("course");
-}
-
-int countOf(const std::string& text, const std::string& what) {
-    int n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-        ++n;
-    return n;
 }
 
 // ---- the handout ------------------------------------------------------------------------------
