@@ -119,3 +119,11 @@ inline const Scene* dollied(const Scene* loaded, double dolly, Scene& storage) {
 }
 
 }  // namespace facet::test
+
+/// Declares `const Scene* var`, the shared scene `name` (loadCached): the test ends by the one rule
+/// (shared_data.hpp) when the scene's file is missing, and fails when it does not load.
+#define REQUIRE_SHARED_SCENE(var, name)                                              \
+    REQUIRE_SHARED_DATA(::facet::test::sharedScenePath(name));                       \
+    std::string var##Error;                                                          \
+    const ::facet::Scene* const var = ::facet::test::loadCached((name), var##Error); \
+    ASSERT_NE(var, nullptr) << var##Error

@@ -5,6 +5,9 @@
 // a display may lack them, so there such a test is skipped and says what is missing (`make test`
 // ends with the skips and why). Under CI (CI=true) all of them are part of the setup, and a run
 // that skipped those tests would pass while checking nothing, so it fails instead.
+// The environment variable FACET_SHARED_DIR, when set, names another shared folder than the one
+// the build was configured with (a copy elsewhere, or a folder that is not there to see the rule
+// at work).
 
 #include <cstdlib>
 #include <filesystem>
@@ -13,9 +16,25 @@
 
 namespace facet::test {
 
-/// A file or folder under FACET_SHARED_DIR/data, e.g. sharedData("course/brick.jpg").
+/// The shared folder: $FACET_SHARED_DIR when set, else the one the build was configured with.
+inline std::string sharedDir() {
+    const char* dir = std::getenv("FACET_SHARED_DIR");
+    return dir != nullptr && *dir != '\0' ? std::string(dir) : std::string(FACET_SHARED_DIR);
+}
+
+/// A file or folder under the shared folder's data/, e.g. sharedData("course/brick.jpg").
 inline std::string sharedData(const std::string& relative) {
-    return std::string(FACET_SHARED_DIR) + "/data/" + relative;
+    return sharedDir() + "/data/" + relative;
+}
+
+/// The course's folder of scenes, meshes and textures under the shared data.
+inline std::string courseDir() {
+    return sharedData("course");
+}
+
+/// Whether `program` is on PATH (a tool a test runs: xvfb-run, xdotool, xprop, gnuplot).
+inline bool haveTool(const std::string& program) {
+    return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
 }
 
 /// True when a missing prerequisite (shared file, OpenGL context, display tool) must fail the
@@ -23,6 +42,11 @@ inline std::string sharedData(const std::string& relative) {
 inline bool sharedDataRequired() {
     const char* ci = std::getenv("CI");
     return ci != nullptr && std::string_view(ci) == "true";
+}
+
+/// Whether gnuplot, which draws the charts of `facet bench`, `accuracy` and `sweeps`, is on PATH.
+inline bool haveGnuplot() {
+    return haveTool("gnuplot");
 }
 
 /// `why` a test cannot run, with the note that it fails under CI=true.
@@ -35,8 +59,8 @@ inline std::string missingPrerequisite(std::string why) {
 inline std::string missingSharedData(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::exists(path, ec)) return {};
-    return missingPrerequisite("shared data missing: " + path +
-                               " (FACET_SHARED_DIR is " FACET_SHARED_DIR
+    return missingPrerequisite("shared data missing: " + path + " (the shared folder is " +
+                               sharedDir() +
                                "; the course and test data belong in ../shared beside the clone)");
 }
 
@@ -68,3 +92,10 @@ inline std::string missingSharedData(const std::string& path) {
         if (facet_missing_.empty()) break;                                         \
         FACET_END_FOR_MISSING(facet_missing_);                                     \
     } while (false)
+
+/// Ends a test that left out its chart checks for want of gnuplot (after the checks that ran
+/// without it): a failure under CI=true, a skip otherwise.
+#define REQUIRE_GNUPLOT()                                    \
+    REQUIRE_PREREQUISITE(::facet::test::haveGnuplot(),       \
+                         "gnuplot is not installed (Debian " \
+                         "package gnuplot-nox), so the chart checks did not run")

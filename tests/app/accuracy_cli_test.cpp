@@ -28,6 +28,7 @@
 #include "facet/scene_io.hpp"
 #include "run_process.hpp"
 #include "shared_data.hpp"
+#include "test_files.hpp"
 
 namespace {
 
@@ -46,19 +47,12 @@ int countLines(const std::string& s) {
     return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
 }
 
-bool haveGnuplot() {
-    return std::system("gnuplot --version >/dev/null 2>&1") == 0;
-}
+using facet::test::haveGnuplot;
 
-std::string fileBytes(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using facet::test::readFile;
 
 bool isPng(const fs::path& path) {
-    const std::string b = fileBytes(path);
+    const std::string b = readFile(path);
     return b.size() > 8 && b.compare(1, 3, "PNG") == 0;
 }
 
@@ -70,6 +64,19 @@ std::vector<fs::path> foldersStartingWith(const fs::path& dir, const std::string
             found.push_back(e.path());
     std::sort(found.begin(), found.end());
     return found;
+}
+
+/// Runs `args` twice in `cwd`: each run must succeed, and the two must leave two folders named
+/// `prefix`…, returned in `runs` with both runs' output in `out`.
+void runTwice(const fs::path& cwd, const std::string& args, const std::string& prefix,
+              std::vector<fs::path>& runs, std::string& out) {
+    const Outcome first = runIn(cwd, args);
+    ASSERT_EQ(first.exitCode, 0) << first.out;
+    const Outcome second = runIn(cwd, args);
+    ASSERT_EQ(second.exitCode, 0) << second.out;
+    runs = foldersStartingWith(cwd, prefix);
+    ASSERT_EQ(runs.size(), 2u) << first.out << second.out;
+    out = first.out + second.out;
 }
 
 /// A CSV without its `#` lines: the header first, then the rows, split at commas.
@@ -127,37 +134,31 @@ TEST_F(AccuracyCli, DefaultFolderIsNewAndCommittedFilesStayUntouched) {
         {dir / "docs/sweeps/depth.png", "committed depth chart"}};
     for (const auto& [path, text] : committed) std::ofstream(path) << text;
 
-    const std::string accuracy = "accuracy --quick " + wall + chartFlag();
-    const Outcome a1 = runIn(dir, accuracy);
-    ASSERT_EQ(a1.exitCode, 0) << a1.out;
-    const Outcome a2 = runIn(dir, accuracy);
-    ASSERT_EQ(a2.exitCode, 0) << a2.out;
-    const std::vector<fs::path> accuracyRuns = foldersStartingWith(dir, "facet-accuracy-");
-    ASSERT_EQ(accuracyRuns.size(), 2u) << a1.out << a2.out;
+    std::vector<fs::path> accuracyRuns;
+    std::string accuracyOut;
+    ASSERT_NO_FATAL_FAILURE(runTwice(dir, "accuracy --quick " + wall + chartFlag(),
+                                     "facet-accuracy-", accuracyRuns, accuracyOut));
     for (const fs::path& run : accuracyRuns) {
         EXPECT_TRUE(fs::exists(run / "accuracy.csv")) << run;
         if (haveGnuplot()) {
             EXPECT_TRUE(isPng(run / "accuracy.png")) << run;
         }
         // The folder is named on stdout with the files in it.
-        EXPECT_NE((a1.out + a2.out).find((run.filename() / "accuracy.csv").string()),
-                  std::string::npos);
+        EXPECT_NE(accuracyOut.find((run.filename() / "accuracy.csv").string()), std::string::npos);
     }
 
     const std::string sweeps = "sweeps --quick --only depth" + chartFlag();
-    const Outcome s1 = runIn(dir, sweeps);
-    ASSERT_EQ(s1.exitCode, 0) << s1.out;
-    const Outcome s2 = runIn(dir, sweeps);
-    ASSERT_EQ(s2.exitCode, 0) << s2.out;
-    const std::vector<fs::path> sweepRuns = foldersStartingWith(dir, "facet-sweeps-");
-    ASSERT_EQ(sweepRuns.size(), 2u) << s1.out << s2.out;
+    std::vector<fs::path> sweepRuns;
+    std::string sweepsOut;
+    ASSERT_NO_FATAL_FAILURE(runTwice(dir, sweeps, "facet-sweeps-", sweepRuns, sweepsOut));
     for (const fs::path& run : sweepRuns) EXPECT_TRUE(fs::exists(run / "depth.csv")) << run;
 
-    for (const auto& [path, text] : committed) EXPECT_EQ(fileBytes(path), text) << path;
+    for (const auto& [path, text] : committed) EXPECT_EQ(readFile(path), text) << path;
     // Named explicitly, a folder is written (and made with its parents).
     const Outcome named = runIn(dir, sweeps + " -o runs/mine");
     ASSERT_EQ(named.exitCode, 0) << named.out;
     EXPECT_TRUE(fs::exists(dir / "runs/mine/depth.csv"));
+    REQUIRE_GNUPLOT();
 }
 
 // --quick runs every phase of `accuracy` in seconds and says so through each: the ground
@@ -207,6 +208,7 @@ TEST_F(AccuracyCli, AccuracyQuickShowsProgressThroughEveryPhase) {
     if (haveGnuplot()) {
         EXPECT_TRUE(isPng(dir / "out/accuracy.png"));
     }
+    REQUIRE_GNUPLOT();
 }
 
 // --quick runs every sweep in seconds, and each sweep's progress reaches a log.
@@ -231,6 +233,7 @@ TEST_F(AccuracyCli, SweepsQuickRunsEverySweepWithProgress) {
             EXPECT_TRUE(isPng(dir / "out" / (std::string(names[k]) + ".png")));
         }
     }
+    REQUIRE_GNUPLOT();
 }
 
 // The bug: accuracy read every file as a .scene, so a mesh's first line was taken for a mesh

@@ -192,10 +192,7 @@ TEST_P(GlVsReference, AgreesWithinStatedTolerances) {
     REQUIRE_TWIN();
     Twin& t = twin();
     const Case& c = GetParam();
-    REQUIRE_SHARED_DATA(facet::test::sharedScenePath(c.scene));
-    std::string error;
-    const facet::Scene* loaded = facet::test::loadCached(c.scene, error);
-    ASSERT_NE(loaded, nullptr) << error;
+    REQUIRE_SHARED_SCENE(loaded, c.scene);
     facet::Scene storage;
     const facet::Scene* scene = facet::test::dollied(loaded, c.dolly, storage);
     const facet::RenderSettings settings = facet::test::settingsFor(c);
@@ -246,10 +243,7 @@ facet::Framebuffer renderTwin(facet::GlRenderer& renderer, const facet::Scene& s
 TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
     REQUIRE_TWIN();
     Twin& t = twin();
-    REQUIRE_SHARED_DATA(facet::test::sharedScenePath("course/example2"));
-    std::string error;
-    const facet::Scene* scene = facet::test::loadCached("course/example2", error);
-    ASSERT_NE(scene, nullptr) << error;
+    REQUIRE_SHARED_SCENE(scene, "course/example2");
     const facet::Framebuffer clean = renderTwin(*t.renderer, *scene);
 
     glViewport(1, 2, 3, 4);
@@ -298,10 +292,7 @@ TEST(GlTwinContext, RenderIgnoresAndRestoresTheCallersState) {
 TEST(GlTwinContext, ResidentDrawsGiveRendersPicture) {
     REQUIRE_TWIN();
     Twin& t = twin();
-    REQUIRE_SHARED_DATA(facet::test::sharedScenePath("course/example2"));
-    std::string error;
-    const facet::Scene* scene = facet::test::loadCached("course/example2", error);
-    ASSERT_NE(scene, nullptr) << error;
+    REQUIRE_SHARED_SCENE(scene, "course/example2");
     facet::RenderSettings phong;
     phong.lighting = Lighting::Phong;
     facet::Framebuffer rendered;
@@ -341,10 +332,7 @@ TEST(GlTwinContext, ResidentDrawsGiveRendersPicture) {
 TEST(GlTwinContext, ASecondContextDrawsTheSamePicture) {
     REQUIRE_TWIN();
     Twin& t = twin();
-    REQUIRE_SHARED_DATA(facet::test::sharedScenePath("course/example1"));
-    std::string error;
-    const facet::Scene* scene = facet::test::loadCached("course/example1", error);
-    ASSERT_NE(scene, nullptr) << error;
+    REQUIRE_SHARED_SCENE(scene, "course/example1");
     const facet::Framebuffer first = renderTwin(*t.renderer, *scene);
     {
         facet::Result<facet::GlContext> other = facet::GlContext::createHeadless();
@@ -366,10 +354,7 @@ TEST(GlTwinMsaa, MatchesTheEnginesMsaa) {
     REQUIRE_TWIN();
     Twin& t = twin();
     for (const char* name : {"course/example1", "scenes/spot_1280x720"}) {
-        REQUIRE_SHARED_DATA(facet::test::sharedScenePath(name));
-        std::string error;
-        const facet::Scene* scene = facet::test::loadCached(name, error);
-        ASSERT_NE(scene, nullptr) << error;
+        REQUIRE_SHARED_SCENE(scene, name);
         facet::RenderSettings s;
         s.lighting = facet::Lighting::Gouraud;
         facet::Framebuffer gl1, gl4, engine1, engine4;

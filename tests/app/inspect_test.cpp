@@ -28,6 +28,7 @@
 #include "facet/scene_io.hpp"
 #include "run_process.hpp"
 #include "shared_data.hpp"
+#include "test_scenes.hpp"
 
 namespace facet {
 namespace {
@@ -37,14 +38,7 @@ namespace {
 constexpr int kSide = 64;
 
 Camera testCamera() {
-    Camera c;
-    c.eye = {0.0, 0.0, -5.0};
-    c.look = {0.0, 0.0, 0.0};
-    c.up = {0.0, -1.0, 0.0};
-    c.focal = 160.0;
-    c.width = kSide;
-    c.height = kSide;
-    return c;
+    return facet::test::lookAt({0.0, 0.0, -5.0}, {0.0, 0.0, 0.0}, 160.0, kSide, kSide);
 }
 
 /// World point of pixel position (px, py) at z = 0 (exact in binary for the values used).

@@ -13,30 +13,18 @@
 #include "lab/steps.hpp"
 #include "run_process.hpp"
 #include "shared_data.hpp"
+#include "test_files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-using facet::test::sharedData;
+using facet::test::courseDir;
 using facet_test::countOf;
-
-/// The course's folder of scenes, meshes and textures under the shared data.
-std::string courseDir() {
-    return sharedData("course");
-}
 
 // ---- the handout ------------------------------------------------------------------------------
 
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void writeFile(const fs::path& p, const std::string& text) {
-    std::ofstream(p) << text;
-}
+using facet::test::readFile;
+using facet::test::writeFile;
 
 // The text of the function whose definition starts with `signature`, up to its closing brace
 // at the start of a line.

@@ -26,13 +26,9 @@
 namespace {
 
 namespace fs = std::filesystem;
+using facet::test::courseDir;
 using facet::test::sharedData;
 using facet_test::countOf;
-
-/// The course's folder of scenes, meshes and textures under the shared data.
-std::string courseDir() {
-    return sharedData("course");
-}
 
 TEST(LabChecks, TheSolutionPassesEveryStep) {
     REQUIRE_SHARED_DATA(courseDir() + "/example0.scene");

@@ -41,6 +41,7 @@
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "shared_data.hpp"
+#include "test_scenes.hpp"
 
 namespace facet {
 namespace {
@@ -262,15 +263,8 @@ TEST(ExtremeTriangles, NonFiniteClipCoordinatesCoverNothingAndSpareTheRest) {
 
 /// A small scene: camera at -z looking at the origin, 64×48.
 Scene smallScene(Mesh mesh) {
-    Scene scene;
-    scene.mesh = std::make_shared<const Mesh>(std::move(mesh));
-    scene.camera.eye = {0.0, 0.0, -4.0};
-    scene.camera.look = {0.0, 0.0, 0.0};
-    scene.camera.up = {0.0, -1.0, 0.0};
-    scene.camera.width = 64;
-    scene.camera.height = 48;
-    scene.camera.focal = 60.0;
-    return scene;
+    return facet::test::sceneOf(
+        std::move(mesh), facet::test::lookAt({0.0, 0.0, -4.0}, {0.0, 0.0, 0.0}, 60.0, 64, 48));
 }
 
 // NaN and ±inf positions in a mesh (the loaders reject them, but a program can build such a mesh
@@ -354,6 +348,17 @@ RenderStats expectMatchesReference(Renderer& renderer, const Scene& scene, const
     return stats;
 }
 
+/// The ground triangle (±size, 0, −size), (0, 0, size) seen from (0.3, 1, 0) towards
+/// (0, 0.7, 5), 64×48, f = 60: it crosses the near plane with far vertices at w ~ size.
+Scene groundScene(float size) {
+    Mesh ground;
+    ground.positions = {{-size, 0.0f, -size}, {size, 0.0f, -size}, {0.0f, 0.0f, size}};
+    ground.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    ground.indices = {0, 1, 2};
+    return facet::test::sceneOf(
+        std::move(ground), facet::test::lookAt({0.3, 1.0, 0.0}, {0.0, 0.7, 5.0}, 60.0, 64, 48));
+}
+
 // A triangle crossing the near plane whose far vertices have |w| around 1e7 times the near
 // distance. A ground triangle (±L, 0, −L), (0, 0, L) under a camera at (0.3, 1, 0) looking at
 // (0, 0.7, 5), 64×48, f = 60, near 0.01. Until the clipper put the new vertex exactly on the
@@ -362,13 +367,7 @@ RenderStats expectMatchesReference(Renderer& renderer, const Scene& scene, const
 TEST(ExtremeTriangles, HugeGroundTriangleAcrossNearPlaneMatchesReference) {
     Renderer renderer;
     for (float size : {1e3f, 8e4f, 1e5f, 1e6f, 1e7f}) {
-        Mesh ground;
-        ground.positions = {{-size, 0.0f, -size}, {size, 0.0f, -size}, {0.0f, 0.0f, size}};
-        ground.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        ground.indices = {0, 1, 2};
-        Scene scene = smallScene(ground);
-        scene.camera.eye = {0.3, 1.0, 0.0};
-        scene.camera.look = {0.0, 0.7, 5.0};
+        const Scene scene = groundScene(size);
         for (Interp interp : {Interp::Perspective, Interp::Affine}) {
             RenderSettings s;
             s.interp = interp;
@@ -387,13 +386,7 @@ TEST(ExtremeTriangles, HugeGroundTriangleAcrossNearPlaneMatchesReference) {
 TEST(ExtremeTriangles, LargeGroundTriangleAcrossNearPlaneMatchesReference) {
     Renderer renderer;
     for (float size : {1e2f, 1e3f, 1e4f, 8e4f}) {
-        Mesh ground;
-        ground.positions = {{-size, 0.0f, -size}, {size, 0.0f, -size}, {0.0f, 0.0f, size}};
-        ground.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        ground.indices = {0, 1, 2};
-        Scene scene = smallScene(ground);
-        scene.camera.eye = {0.3, 1.0, 0.0};
-        scene.camera.look = {0.0, 0.7, 5.0};
+        const Scene scene = groundScene(size);
         for (double nearPlane : {1e-2, 1.0}) {
             RenderSettings s;
             s.nearPlane = nearPlane;
@@ -631,7 +624,7 @@ TEST(ViewAngle, AffineDegradesWithAnglePerspectiveStaysExact) {
     // Without the course's brick the sweep uses generated bricks, which the numbers are not for.
     REQUIRE_SHARED_DATA(test::sharedData("course/brick.jpg"));
     app::SweepOptions options;
-    options.shared = std::string(FACET_SHARED_DIR);
+    options.shared = facet::test::sharedDir();
     options.frames = 1;
     const std::vector<app::ViewAnglePoint> points = app::sweepViewAngle(options);
     ASSERT_EQ(points.size(), 2u * 5u * app::viewAngles(false).size());

@@ -24,6 +24,7 @@
 #include "facet/procedural.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
+#include "test_scenes.hpp"
 
 namespace facet {
 namespace {
@@ -36,10 +37,7 @@ std::vector<std::uint32_t> renderColors(const Scene& scene, const RenderSettings
 }
 
 std::vector<glm::vec4> clipPositions(const Scene& scene) {
-    const glm::mat4 m(clipFromWorld(scene.camera));
-    std::vector<glm::vec4> clip;
-    for (const glm::vec3& p : scene.mesh->positions) clip.push_back(m * glm::vec4(p, 1.0f));
-    return clip;
+    return facet::test::clipPositions(scene.camera, scene.mesh->positions);
 }
 
 std::size_t countDifferent(const std::vector<std::uint32_t>& a,
@@ -175,14 +173,9 @@ TEST(SubPixelBits, CoverageIsExactOnItsGrid) {
 // the snapped mesh is still closed and the fill rule still hands each shared-edge centre to one
 // side. The poles' slivers are thinner than the grid here.
 TEST(SubPixelBits, SphereHasNoCracksOrDoubleDrawingAtFourBits) {
-    Scene scene;
-    scene.mesh = std::make_shared<const facet::Mesh>(makeUvSphere(48, 96));
-    scene.camera.eye = {0.3, 1.7, 2.6};
-    scene.camera.look = {0.0, 0.0, 0.0};
-    scene.camera.up = {0.0, -1.0, 0.0};
-    scene.camera.width = 301;
-    scene.camera.height = 197;
-    scene.camera.focal = 230.0;
+    const Scene scene = facet::test::sceneOf(
+        makeUvSphere(48, 96),
+        facet::test::lookAt({0.3, 1.7, 2.6}, {0.0, 0.0, 0.0}, 230.0, 301, 197));
     const std::vector<glm::vec4> clip = clipPositions(scene);
     Renderer renderer;
     for (const int bits : {4, 2}) {

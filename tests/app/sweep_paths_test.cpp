@@ -31,7 +31,7 @@ constexpr double kReferenceBudgetMs = 10000.0;
 
 SweepOptions quickOptions() {
     SweepOptions o;
-    o.shared = FACET_SHARED_DIR;
+    o.shared = facet::test::sharedDir();
     o.quick = true;
     o.frames = 1;
     return o;

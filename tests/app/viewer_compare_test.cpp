@@ -15,6 +15,7 @@
 #include "facet/scene_io.hpp"
 #include "render_worker.hpp"
 #include "renderer_choice.hpp"
+#include "test_scenes.hpp"
 #include "viewer_model.hpp"
 
 namespace {
@@ -22,12 +23,7 @@ namespace {
 using namespace facet;
 using namespace facet::view;
 
-Framebuffer filled(int w, int h, std::uint32_t rgba) {
-    Framebuffer f;
-    f.resize(w, h);
-    f.clear(rgba);
-    return f;
-}
+using facet::test::filledFrame;
 
 TEST(ImageDiff, PixelErrorIsTheLargestChannelDifference) {
     EXPECT_EQ(pixelError(packRgba(10, 20, 30), packRgba(10, 20, 30)), 0);
@@ -37,7 +33,7 @@ TEST(ImageDiff, PixelErrorIsTheLargestChannelDifference) {
 }
 
 TEST(ImageDiff, CountsMeanMaxAndTheHeatMap) {
-    Framebuffer a = filled(4, 2, packRgba(100, 100, 100));
+    Framebuffer a = filledFrame(4, 2, packRgba(100, 100, 100));
     Framebuffer b = a;
     Framebuffer heat;
     ImageDiff d = diffImages(a, b, &heat);
@@ -67,15 +63,15 @@ TEST(ImageDiff, CountsMeanMaxAndTheHeatMap) {
     diffImages(a, b, &heat, 80);
     EXPECT_NE(heat.color[3], packRgba(253, 231, 37));
 
-    const Framebuffer c = filled(3, 2, 0);
+    const Framebuffer c = filledFrame(3, 2, 0);
     d = diffImages(a, c, &heat);
     EXPECT_FALSE(d.sameSize);
     EXPECT_EQ(d.pixels, 0u);
 }
 
 TEST(CompareView, SplitTakesEachSideFromItsFrameWithAWhiteDivider) {
-    const Framebuffer a = filled(10, 3, packRgba(255, 0, 0));
-    const Framebuffer b = filled(10, 3, packRgba(0, 0, 255));
+    const Framebuffer a = filledFrame(10, 3, packRgba(255, 0, 0));
+    const Framebuffer b = filledFrame(10, 3, packRgba(0, 0, 255));
     Framebuffer out;
     composeSplit(a, b, 4, out);
     for (int y = 0; y < 3; ++y)
@@ -101,7 +97,7 @@ TEST(CompareView, SplitTakesEachSideFromItsFrameWithAWhiteDivider) {
 TEST(CompareView, ComposingTwoRenderersIsComposingTwoInterpolations) {
     // Side by side, the engine's frame and the twin's go through the very code the Compare
     // view uses: the split keeps each side's pixels, the heat map marks where they differ.
-    const Framebuffer cpu = filled(8, 2, packRgba(10, 20, 30));
+    const Framebuffer cpu = filledFrame(8, 2, packRgba(10, 20, 30));
     Framebuffer gl = cpu;
     gl.color[gl.index(6, 1)] = packRgba(10, 21, 30);  // one step apart, on the right side
     Framebuffer shown;

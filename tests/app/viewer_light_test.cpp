@@ -19,6 +19,7 @@
 #include "framing.hpp"
 #include "light_marker.hpp"
 #include "render_worker.hpp"
+#include "test_scenes.hpp"
 #include "viewer_model.hpp"
 
 namespace {
@@ -29,14 +30,7 @@ using namespace facet::view;
 const std::string kDefaultScene = std::string(FACET_ASSETS_DIR) + "/default.scene";
 
 Camera testCamera() {
-    Camera c;
-    c.eye = {0.0, 0.0, 5.0};
-    c.look = {0.0, 0.0, 0.0};
-    c.up = {0.0, -1.0, 0.0};
-    c.focal = 500.0;
-    c.width = 640;
-    c.height = 480;
-    return c;
+    return facet::test::lookAt({0.0, 0.0, 5.0}, {0.0, 0.0, 0.0}, 500.0, 640, 480);
 }
 
 TEST(LightMarker, APointLightsMarkerIsItsProjection) {
@@ -202,19 +196,14 @@ TEST(Framing, TheBoundingSphereFitsTheNarrowerFieldOfView) {
     EXPECT_EQ(boundingSphere(Mesh{}).radius, 0.0);
 }
 
-Framebuffer frame(int w, int h, std::uint32_t colour) {
-    Framebuffer f;
-    f.resize(w, h);
-    f.clear(colour);
-    return f;
-}
+using facet::test::filledFrame;
 
 TEST(CompareStats, ErrorsAverageOverThePixelsEitherSideCovers) {
     // 10x10, the background equal on both sides; a 2x2 object on the left only, a 2x2 one on
     // both sides differing by 30, and one uncovered pixel that differs (a line drawn without
     // depth).
-    Framebuffer a = frame(10, 10, packRgba(0, 0, 0));
-    Framebuffer b = frame(10, 10, packRgba(0, 0, 0));
+    Framebuffer a = filledFrame(10, 10, packRgba(0, 0, 0));
+    Framebuffer b = filledFrame(10, 10, packRgba(0, 0, 0));
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x) {
             a.color[a.index(x, y)] = packRgba(90, 0, 0);
@@ -234,7 +223,7 @@ TEST(CompareStats, ErrorsAverageOverThePixelsEitherSideCovers) {
     // No depth planes: every pixel counts.
     a.depth.clear();
     EXPECT_EQ(diffCovered(a, b).pixels, 100u);
-    EXPECT_FALSE(diffCovered(a, frame(5, 5, 0)).sameSize);
+    EXPECT_FALSE(diffCovered(a, filledFrame(5, 5, 0)).sameSize);
 }
 
 TEST(CompareStats, TheColourBarMatchesTheHeatMap) {
@@ -244,8 +233,8 @@ TEST(CompareStats, TheColourBarMatchesTheHeatMap) {
     EXPECT_EQ(heatTop(64, 37), 64);
     EXPECT_EQ(heatColour(0.0, 37), glm::dvec3(0.0));
     // The heat map's pixel for an error of 20 with 37 brightest is the bar's colour at 20.
-    Framebuffer a = frame(2, 1, packRgba(0, 0, 0));
-    Framebuffer b = frame(2, 1, packRgba(0, 0, 0));
+    Framebuffer a = filledFrame(2, 1, packRgba(0, 0, 0));
+    Framebuffer b = filledFrame(2, 1, packRgba(0, 0, 0));
     b.color[0] = packRgba(20, 0, 0);
     b.color[1] = packRgba(37, 0, 0);
     Framebuffer heat;

@@ -35,19 +35,19 @@
 #include "settings_map.hpp"
 #include "shared_data.hpp"
 #include "state_file.hpp"
+#include "test_files.hpp"
 #include "viewer_model.hpp"
 
 namespace {
+
+using facet::test::sharedData;
+using facet::test::testData;
 
 namespace fs = std::filesystem;
 using namespace facet;
 using namespace facet::view;
 
 const std::string kDefaultScene = std::string(FACET_ASSETS_DIR) + "/default.scene";
-
-std::string data(const std::string& name) {
-    return std::string(FACET_TEST_DATA) + "/" + name;
-}
 
 /// A model with the default scene loaded and one frame of the scene's size rendered.
 ViewerModel loadedModel() {
@@ -111,7 +111,7 @@ TEST(ViewerModel, MalformedScenesKeepTheOldOne) {
          {"scene_nan.scene", "scene_inf.scene", "scene_light_3_numbers.scene",
           "scene_missing_mesh.scene", "scene_bad_mesh.scene", "scene_truncated.scene",
           "scene_corrupt_texture.scene", "no_such_file.scene"}) {
-        const Status error = m.load(data(bad));
+        const Status error = m.load(testData(bad));
         ASSERT_FALSE(error) << bad << " loaded";
         // The popup shows "file:line: message" (or "file: message") naming the file at fault,
         // the scene or the mesh it names.
@@ -124,20 +124,20 @@ TEST(ViewerModel, MalformedScenesKeepTheOldOne) {
         EXPECT_TRUE(m.frame.color == before) << bad << " changed the picture";
     }
     EXPECT_EQ(m.recent.size(), 1u);  // failures never join the recent list
-    EXPECT_TRUE(m.load(data("scene_valid.scene")));
+    EXPECT_TRUE(m.load(testData("scene_valid.scene")));
     EXPECT_EQ(m.recent.size(), 2u);
     EXPECT_EQ(m.scene.camera.width, 320);
 }
 
 TEST(ViewerModel, ABadTextureKeepsTheOldOne) {
     ViewerModel m;
-    ASSERT_TRUE(m.load(data("scene_texture.scene")));
+    ASSERT_TRUE(m.load(testData("scene_texture.scene")));
     ASSERT_TRUE(m.scene.texture);
     const Texture* before = m.scene.texture.get();
-    EXPECT_FALSE(m.loadTexture(data("tex_not_an_image.png")));
-    EXPECT_FALSE(m.loadTexture(data("no_such_texture.png")));
+    EXPECT_FALSE(m.loadTexture(testData("tex_not_an_image.png")));
+    EXPECT_FALSE(m.loadTexture(testData("no_such_texture.png")));
     EXPECT_EQ(m.scene.texture.get(), before);
-    EXPECT_TRUE(m.loadTexture(data("tex_4x4.png")));
+    EXPECT_TRUE(m.loadTexture(testData("tex_4x4.png")));
     EXPECT_NE(m.scene.texture.get(), before);
     EXPECT_EQ(m.scene.texture->width(), 4);
 }
@@ -151,7 +151,7 @@ TEST(ViewerModel, FilesReplacedOnDiskKeepTheLastGoodScene) {
                           std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
     fs::create_directories(dir);
     for (const char* name : {"scene_texture.scene", "mesh_square.off", "texture_checker.png"})
-        fs::copy_file(data(name), dir / name, fs::copy_options::overwrite_existing);
+        fs::copy_file(testData(name), dir / name, fs::copy_options::overwrite_existing);
     const std::string scenePath = (dir / "scene_texture.scene").string();
     ViewerModel m;
     ASSERT_TRUE(m.load(scenePath));
@@ -187,11 +187,11 @@ TEST(ViewerModel, FilesReplacedOnDiskKeepTheLastGoodScene) {
     // Not a regular file: the scene's line 10 is reported as naming no file it can read.
     expectKept("a texture replaced by a pipe", "'texture_checker.png' not found");
     fs::remove(png);
-    fs::copy_file(data("texture_checker.png"), png);
+    fs::copy_file(testData("texture_checker.png"), png);
     std::string mesh;
     {
-        std::ifstream in(data("mesh_square.off"), std::ios::binary);
-        mesh.resize(static_cast<std::size_t>(fs::file_size(data("mesh_square.off"))));
+        std::ifstream in(testData("mesh_square.off"), std::ios::binary);
+        mesh.resize(static_cast<std::size_t>(fs::file_size(testData("mesh_square.off"))));
         in.read(mesh.data(), static_cast<std::streamsize>(mesh.size()));
     }
     replace("mesh_square.off", mesh.substr(0, mesh.size() / 2));
@@ -454,7 +454,7 @@ TEST(ViewerFiles, ListsScenesRecentAndFreeNames) {
     const auto files = listSceneFiles(FACET_TEST_DATA, &error);
     EXPECT_TRUE(error.empty()) << error;
     EXPECT_TRUE(std::is_sorted(files.begin(), files.end()));
-    EXPECT_NE(std::find(files.begin(), files.end(), data("scene_valid.scene")), files.end());
+    EXPECT_NE(std::find(files.begin(), files.end(), testData("scene_valid.scene")), files.end());
     for (const auto& f : files) EXPECT_EQ(fs::path(f).extension(), ".scene") << f;
     EXPECT_TRUE(listSceneFiles("/no/such/folder", &error).empty());
     EXPECT_FALSE(error.empty());
@@ -582,8 +582,8 @@ TEST(ViewerResources, FindsTheDefaultScene) {
 // Models as users bring them (issue 14): bare meshes, saving, defaults, the browser, drops,
 // recent files across runs, loading on a worker thread.
 
-const std::string kModels = std::string(FACET_SHARED_DIR) + "/data/models";
-const std::string kSpotScene = std::string(FACET_SHARED_DIR) + "/data/scenes/spot_1280x720.scene";
+const std::string kModels = sharedData("models");
+const std::string kSpotScene = sharedData("scenes/spot_1280x720.scene");
 
 /// A fresh folder per test, removed when the test passed.
 fs::path scratchFolder() {
@@ -842,7 +842,7 @@ namespace {
 // panel or given as --texture all go through ViewerModel::loadTexture, which picks the settings
 // that show it whatever was set before: the course's coloured wall shows the texel alone.
 TEST(ViewerModels, ATextureByAnyRouteOpensWithTheSameSettings) {
-    const std::string course = std::string(FACET_SHARED_DIR) + "/data/course/";
+    const std::string course = sharedData("course/");
     REQUIRE_SHARED_DATA(course + "textured_facet.off");
     Framebuffer first;
     for (const ShaderKind before : {ShaderKind::Depth, ShaderKind::Painter, ShaderKind::Texture}) {

@@ -9,6 +9,7 @@
 
 #include "facet/camera.hpp"
 #include "orbit.hpp"
+#include "test_scenes.hpp"
 
 namespace {
 
@@ -16,14 +17,7 @@ using facet::Camera;
 using namespace facet::view;
 
 Camera courseCamera() {
-    Camera c;
-    c.eye = {1.6, 1.4, 2.6};
-    c.look = {0.1, -0.2, 0.3};
-    c.up = {0.0, -1.0, 0.0};
-    c.focal = 1100.0;
-    c.width = 1280;
-    c.height = 720;
-    return c;
+    return facet::test::lookAt({1.6, 1.4, 2.6}, {0.1, -0.2, 0.3}, 1100.0, 1280, 720);
 }
 
 bool finite(const glm::dvec3& v) {

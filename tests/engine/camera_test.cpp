@@ -7,19 +7,13 @@
 #include <gtest/gtest.h>
 
 #include "facet/camera.hpp"
+#include "test_scenes.hpp"
 
 namespace facet {
 namespace {
 
 Camera example0() {
-    Camera c;
-    c.eye = {1.2, 2.0, 2.0};
-    c.look = {0.0, 0.0, 0.0};
-    c.up = {0.0, -1.0, 0.0};
-    c.focal = 512.0;
-    c.width = 512;
-    c.height = 512;
-    return c;
+    return test::lookAt({1.2, 2.0, 2.0}, {0.0, 0.0, 0.0}, 512.0, 512, 512);
 }
 
 // By hand: z = (-1.2, -2, -2)/√9.44; x = up × z = (2, 0, -1.2)/√5.44 (after normalising);

@@ -148,10 +148,7 @@ class FastVsReference : public testing::TestWithParam<Case> {};
 
 TEST_P(FastVsReference, AgreesOutsideTheAmbiguityMask) {
     const Case& c = GetParam();
-    REQUIRE_SHARED_DATA(facet::test::sharedScenePath(c.scene));
-    std::string error;
-    const facet::Scene* loaded = facet::test::loadCached(c.scene, error);
-    ASSERT_NE(loaded, nullptr) << error;
+    REQUIRE_SHARED_SCENE(loaded, c.scene);
     facet::Scene storage;
     const facet::Scene* scene = facet::test::dollied(loaded, c.dolly, storage);
     const facet::RenderSettings settings = facet::test::settingsFor(c);

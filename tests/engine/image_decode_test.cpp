@@ -34,18 +34,15 @@
 #define STB_IMAGE_IMPLEMENTATION
 #include "io/stb_image_quiet.hpp"
 #include "shared_data.hpp"
+#include "test_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace facet;
 
 namespace {
 
-std::string data(const std::string& name) {
-    return std::string(FACET_TEST_DATA) + "/" + name;
-}
-std::string shared(const std::string& name) {
-    return std::string(FACET_SHARED_DIR) + "/data/" + name;
-}
+using facet::test::sharedData;
+using facet::test::testData;
 
 std::vector<unsigned char> readBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -96,12 +93,12 @@ TEST(ImageDecode, PngMatchesStbExactly) {
     for (const char* name : {"tex_4x4.png", "tex_gray_3x2.png", "texture_checker.png",
                              "tex_png_16bit.png", "tex_png_interlaced.png", "tex_png_palette.png",
                              "tex_png_trns.png", "tex_png_gray_alpha.png"}) {
-        const Difference d = againstStb(data(name));
+        const Difference d = againstStb(testData(name));
         EXPECT_TRUE(d.sameSize) << name;
         EXPECT_EQ(d.maxChannel, 0) << name;
     }
-    REQUIRE_SHARED_DATA(shared("models"));
-    const Difference spot = againstStb(shared("models/spot_texture.png"));
+    REQUIRE_SHARED_DATA(sharedData("models"));
+    const Difference spot = againstStb(sharedData("models/spot_texture.png"));
     EXPECT_TRUE(spot.sameSize);
     EXPECT_EQ(spot.maxChannel, 0);
 }
@@ -112,16 +109,16 @@ TEST(ImageDecode, PngMatchesStbExactly) {
 TEST(ImageDecode, JpegWithinMeasuredDifferenceOfStb) {
     for (const char* name : {"tex_jpeg_progressive.jpg", "tex_jpeg_gray.jpg",
                              "tex_jpeg_422_odd.jpg", "tex_jpeg_cmyk.jpg"}) {
-        const Difference d = againstStb(data(name));
+        const Difference d = againstStb(testData(name));
         EXPECT_TRUE(d.sameSize) << name;
         EXPECT_LE(d.maxChannel, 3) << name;
     }
-    REQUIRE_SHARED_DATA(shared("course"));
-    const Difference brick = againstStb(shared("course/brick.jpg"));
+    REQUIRE_SHARED_DATA(sharedData("course"));
+    const Difference brick = againstStb(sharedData("course/brick.jpg"));
     EXPECT_TRUE(brick.sameSize);
     EXPECT_LE(brick.maxChannel, 3);
     EXPECT_LT(brick.differingPixels, 0.11);
-    const Difference world = againstStb(shared("course/world_map.jpg"));
+    const Difference world = againstStb(sharedData("course/world_map.jpg"));
     EXPECT_TRUE(world.sameSize);
     EXPECT_LE(world.maxChannel, 2);
     EXPECT_LT(world.differingPixels, 0.03);
@@ -130,9 +127,9 @@ TEST(ImageDecode, JpegWithinMeasuredDifferenceOfStb) {
 // Fuzz finding (stb_image 2.27): Huffman counts adding up to more than 256. libjpeg-turbo
 // refuses the table; the error names the file and says the image is damaged.
 TEST(ImageDecode, HuffmanTableOverflowIsAnError) {
-    const Result<Texture> t = loadTexture(data("tex_huffman_overflow.jpg"));
+    const Result<Texture> t = loadTexture(testData("tex_huffman_overflow.jpg"));
     ASSERT_FALSE(t.ok());
-    EXPECT_EQ(t.error().loc.file, data("tex_huffman_overflow.jpg"));
+    EXPECT_EQ(t.error().loc.file, testData("tex_huffman_overflow.jpg"));
     EXPECT_NE(t.error().message.find("JPEG"), std::string::npos) << t.error().what();
     EXPECT_NE(t.error().message.find("libjpeg"), std::string::npos) << t.error().what();
 }
@@ -140,7 +137,7 @@ TEST(ImageDecode, HuffmanTableOverflowIsAnError) {
 // A progressive JPEG whose last scan is repeated 600 times: each repeat is a pass over the
 // image, so the decoder stops after kMaxJpegScans instead of working on.
 TEST(ImageDecode, EndlessProgressiveScansAreStopped) {
-    const std::vector<unsigned char> bytes = readBytes(data("tex_jpeg_progressive.jpg"));
+    const std::vector<unsigned char> bytes = readBytes(testData("tex_jpeg_progressive.jpg"));
     ASSERT_GT(bytes.size(), 4u);
     std::size_t lastScan = 0;
     for (std::size_t i = 0; i + 1 < bytes.size(); ++i) {
@@ -168,7 +165,7 @@ TEST(ImageDecode, EndlessProgressiveScansAreStopped) {
 TEST(ImageDecode, SidesOverTheLimitAreRefusedFromTheHeader) {
     const detail::DecodeLimits small{.maxSide = 4};
     for (const char* name : {"tex_jpeg_progressive.jpg", "tex_png_16bit.png", "tex_5x3.bmp"}) {
-        const Result<Texture> t = detail::decodeTexture(readBytes(data(name)), name, small);
+        const Result<Texture> t = detail::decodeTexture(readBytes(testData(name)), name, small);
         ASSERT_FALSE(t.ok()) << name;
         EXPECT_NE(t.error().message.find("a texture side must be 1 to 4"), std::string::npos)
             << t.error().what();
@@ -177,7 +174,7 @@ TEST(ImageDecode, SidesOverTheLimitAreRefusedFromTheHeader) {
 
 // Damage after the header: the message says so and names the decoder.
 TEST(ImageDecode, DamagedDataGivesClearErrors) {
-    std::vector<unsigned char> png = readBytes(data("tex_png_16bit.png"));
+    std::vector<unsigned char> png = readBytes(testData("tex_png_16bit.png"));
     ASSERT_GT(png.size(), 149u);
     png.resize(149);  // IDAT starts at byte 111 and holds 66 bytes
     const Result<Texture> cut = detail::decodeTexture(png, "cut.png");
@@ -185,7 +182,7 @@ TEST(ImageDecode, DamagedDataGivesClearErrors) {
     EXPECT_NE(cut.error().message.find("damaged or truncated (libpng:"), std::string::npos)
         << cut.error().what();
 
-    std::vector<unsigned char> jpeg = readBytes(data("tex_jpeg_gray.jpg"));
+    std::vector<unsigned char> jpeg = readBytes(testData("tex_jpeg_gray.jpg"));
     jpeg.resize(40);  // inside the header's tables
     const Result<Texture> header = detail::decodeTexture(jpeg, "header.jpg");
     ASSERT_FALSE(header.ok());
@@ -196,7 +193,7 @@ TEST(ImageDecode, DamagedDataGivesClearErrors) {
 // A truncated or corrupt JPEG is an error, as a truncated PNG is: libjpeg only warns and makes up
 // the missing rows (a grey wall with exit 0 before). Real photographs, damaged on disk here.
 TEST(ImageDecode, TruncatedOrCorruptJpegIsAnErrorNamingTheFile) {
-    const std::string brick = shared("course/brick.jpg");
+    const std::string brick = sharedData("course/brick.jpg");
     REQUIRE_SHARED_DATA(brick);
     const std::vector<unsigned char> whole = readBytes(brick);
     ASSERT_GT(whole.size(), 4000u);
@@ -280,14 +277,14 @@ TEST(ImageDecode, WrittenPngDecodesToTheFramesPixels) {
 // zeros past the end and filled all 15 million. Refused from the header: no BMP or TGA packs
 // more than 64 pixels into a byte.
 TEST(ImageDecode, TgaClaimingMorePixelsThanItsBytesIsRefused) {
-    const Result<Texture> t = loadTexture(data("tex_tga_empty_claim.tga"));
+    const Result<Texture> t = loadTexture(testData("tex_tga_empty_claim.tga"));
     ASSERT_FALSE(t.ok());
     EXPECT_NE(t.error().message.find("image claims 3855x3855 pixels, more than a 134-byte BMP or "
                                      "TGA file can hold"),
               std::string::npos)
         << t.error().what();
     // A real run-length TGA (8x8 in 50 bytes) still loads.
-    const Result<Texture> rle = loadTexture(data("tex_tga_rle.tga"));
+    const Result<Texture> rle = loadTexture(testData("tex_tga_rle.tga"));
     ASSERT_TRUE(rle.ok()) << rle.error().what();
     EXPECT_EQ(rle->width(), 8);
 }

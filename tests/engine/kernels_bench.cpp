@@ -69,7 +69,7 @@ class Rng {
     std::uint64_t s_;
 };
 
-const char* const kBunnyScene = FACET_SHARED_DIR "/data/scenes/bunny_1920x1080.scene";
+const std::string kBunnyScene = test::sharedData("scenes/bunny_1920x1080.scene");
 
 /// The bunny at 1920×1080, loaded once for all benchmarks (loading costs more than most of them);
 /// null with `error` set when the shared data is missing, and under CI the end of the run (the

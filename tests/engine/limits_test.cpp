@@ -18,15 +18,14 @@
 #include "facet/mesh_io.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
+#include "test_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace facet;
 
 namespace {
 
-std::string data(const std::string& name) {
-    return std::string(FACET_TEST_DATA) + "/" + name;
-}
+using facet::test::testData;
 
 // A private folder for files a test makes, removed at the end.
 class TempDir {
@@ -250,7 +249,7 @@ TEST(ObjLimit, AbsurdFaceIsRefusedNamingItsLine) {
 // Fuzz finding: a colour of 4.4e35 was cast to int64_t (undefined behaviour) to test whether it
 // is a whole number. It is one, so the file's colours are 0-255 and scaled.
 TEST(OffLimit, HugeColourIsAWholeNumberWithoutOverflow) {
-    const Result<Mesh> mesh = loadOff(data("off_color_huge.off"));
+    const Result<Mesh> mesh = loadOff(testData("off_color_huge.off"));
     ASSERT_TRUE(mesh.ok()) << mesh.error().what();
     ASSERT_EQ(mesh->colors.size(), 2u);
     EXPECT_FLOAT_EQ(mesh->colors[1].g, 55.0f / 255.0f);

@@ -22,21 +22,19 @@
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 #include "shared_data.hpp"
+#include "test_files.hpp"
 
 namespace {
+
+using facet::test::sharedData;
+using facet::test::testData;
 
 namespace fs = std::filesystem;
 using facet::Mesh;
 using facet::Result;
 
-std::string data(const std::string& name) {
-    return std::string(FACET_TEST_DATA) + "/" + name;
-}
 std::string course(const std::string& name) {
     return facet::test::sharedData("course/" + name);
-}
-std::string shared(const std::string& name) {
-    return facet::test::sharedData(name);
 }
 
 // The result is an error at `line` of a file whose name ends in `file`, and its message contains
@@ -86,7 +84,7 @@ void expectVec(glm::dvec3 got, glm::dvec3 want) {
 // OFF: valid files
 
 TEST(OffLoader, ColoredSquare) {
-    auto r = facet::loadOff(data("mesh_square.off"));
+    auto r = facet::loadOff(testData("mesh_square.off"));
     expectLoaded(r);
     EXPECT_EQ(r->vertexCount(), 4u);
     EXPECT_EQ(r->triangleCount(), 2u);
@@ -99,7 +97,7 @@ TEST(OffLoader, ColoredSquare) {
 }
 
 TEST(OffLoader, NoColorsMeansEmptyColorArray) {
-    auto r = facet::loadOff(data("off_no_colors.off"));
+    auto r = facet::loadOff(testData("off_no_colors.off"));
     expectLoaded(r);
     EXPECT_EQ(r->vertexCount(), 3u);
     EXPECT_FALSE(r->hasColors());
@@ -107,7 +105,7 @@ TEST(OffLoader, NoColorsMeansEmptyColorArray) {
 }
 
 TEST(OffLoader, UvsAreKeptAsWritten) {
-    auto r = facet::loadOff(data("off_uv.off"));
+    auto r = facet::loadOff(testData("off_uv.off"));
     expectLoaded(r);
     ASSERT_EQ(r->uvs.size(), 3u);
     expectVec(r->uvs[0], {0.25f, 0.5f});  // no flip for OFF (spec §2)
@@ -116,7 +114,7 @@ TEST(OffLoader, UvsAreKeptAsWritten) {
 }
 
 TEST(OffLoader, Coff255ColorsAreScaled) {
-    auto r = facet::loadOff(data("off_coff_255.off"));
+    auto r = facet::loadOff(testData("off_coff_255.off"));
     expectLoaded(r);
     ASSERT_EQ(r->colors.size(), 3u);
     expectVec(r->colors[0], {1, 0, 0}, 1e-6f);
@@ -125,13 +123,13 @@ TEST(OffLoader, Coff255ColorsAreScaled) {
 }
 
 TEST(OffLoader, IntegerColorsInUnitRangeAreNotScaled) {
-    auto r = facet::loadOff(data("off_colors_01_integers.off"));
+    auto r = facet::loadOff(testData("off_colors_01_integers.off"));
     expectLoaded(r);
     expectVec(r->colors[0], {1, 0, 0});
 }
 
 TEST(OffLoader, PolygonsAreFanned) {
-    auto r = facet::loadOff(data("off_polygons.off"));
+    auto r = facet::loadOff(testData("off_polygons.off"));
     expectLoaded(r);
     EXPECT_EQ(r->triangleCount(), 5u);  // quad: 2, pentagon: 3
     EXPECT_EQ(r->indices,
@@ -139,7 +137,7 @@ TEST(OffLoader, PolygonsAreFanned) {
 }
 
 TEST(OffLoader, CommentsBomBlankLinesAndSameLineCounts) {
-    auto r = facet::loadOff(data("off_comments.off"));
+    auto r = facet::loadOff(testData("off_comments.off"));
     expectLoaded(r);
     EXPECT_EQ(r->vertexCount(), 4u);
     EXPECT_EQ(r->triangleCount(), 2u);
@@ -148,7 +146,7 @@ TEST(OffLoader, CommentsBomBlankLinesAndSameLineCounts) {
 }
 
 TEST(OffLoader, CrlfFile) {
-    auto r = facet::loadOff(data("off_crlf.off"));
+    auto r = facet::loadOff(testData("off_crlf.off"));
     expectLoaded(r);
     EXPECT_EQ(r->triangleCount(), 1u);
     expectVec(r->colors[0], {0.2f, 0.4f, 0.6f});
@@ -170,7 +168,7 @@ TEST(OffLoader, TinyValuesUnderflowToZeroInsteadOfFailing) {
 }
 
 TEST(OffLoader, CourseFiles) {
-    REQUIRE_SHARED_DATA(shared("course"));
+    REQUIRE_SHARED_DATA(sharedData("course"));
     struct Case {
         const char* file;
         std::size_t vertices, triangles;
@@ -213,37 +211,37 @@ TEST(OffLoader, CourseCubeColors) {
 // OFF: errors
 
 TEST(OffErrors, BadMagic) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_bad_magic.off")), "off_bad_magic.off", 1,
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_bad_magic.off")), "off_bad_magic.off", 1,
                         {"OFF or COFF", "'PLY'"}));
 }
 
 TEST(OffErrors, NonIntegerCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_counts_non_integer.off")),
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_counts_non_integer.off")),
                         "off_counts_non_integer.off", 3, {"face count NF", "'2.5'"}));
 }
 
 TEST(OffErrors, NegativeCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_counts_negative.off")), "off_counts_negative.off",
-                        2, {"vertex count NV", "'-4'"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_counts_negative.off")),
+                        "off_counts_negative.off", 2, {"vertex count NV", "'-4'"}));
 }
 
 TEST(OffErrors, MissingCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_counts_missing.off")), "off_counts_missing.off", 2,
-                        {"NV NF NE", "got 1"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_counts_missing.off")),
+                        "off_counts_missing.off", 2, {"NV NF NE", "got 1"}));
 }
 
 TEST(OffErrors, NoFaces) {
     EXPECT_TRUE(
-        failsAt(facet::loadOff(data("off_no_faces.off")), "off_no_faces.off", 2, {"no faces"}));
+        failsAt(facet::loadOff(testData("off_no_faces.off")), "off_no_faces.off", 2, {"no faces"}));
 }
 
 TEST(OffErrors, FacesWithoutVertices) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_faces_without_vertices.off")),
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_faces_without_vertices.off")),
                         "off_faces_without_vertices.off", 2, {"1 face", "no vertices"}));
 }
 
 TEST(OffErrors, HugeHeaderFailsBeforeAllocating) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_huge_header.off")), "off_huge_header.off", 2,
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_huge_header.off")), "off_huge_header.off", 2,
                         {"promises 2000000000 vertices and 2000000000 faces", "only 0 bytes"}));
     // Counts near the 64-bit limit must not overflow the size check.
     EXPECT_TRUE(failsAt(
@@ -255,84 +253,85 @@ TEST(OffErrors, HugeHeaderFailsBeforeAllocating) {
 }
 
 TEST(OffErrors, IndexOutOfRange) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_bad_index.off")), "off_bad_index.off", 10,
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_bad_index.off")), "off_bad_index.off", 10,
                         {"vertex index 4", "out of range", "4 vertices"}));
 }
 
 TEST(OffErrors, NegativeIndex) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_negative_index.off")), "off_negative_index.off", 6,
-                        {"vertex index -1", "out of range"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_negative_index.off")),
+                        "off_negative_index.off", 6, {"vertex index -1", "out of range"}));
 }
 
 TEST(OffErrors, NaN) {
-    EXPECT_TRUE(
-        failsAt(facet::loadOff(data("off_nan.off")), "off_nan.off", 4, {"non-finite", "'nan'"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_nan.off")), "off_nan.off", 4,
+                        {"non-finite", "'nan'"}));
 }
 
 TEST(OffErrors, Inf) {
-    EXPECT_TRUE(
-        failsAt(facet::loadOff(data("off_inf.off")), "off_inf.off", 5, {"non-finite", "'-inf'"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_inf.off")), "off_inf.off", 5,
+                        {"non-finite", "'-inf'"}));
 }
 
 TEST(OffErrors, FloatOverflow) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_overflow.off")), "off_overflow.off", 4,
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_overflow.off")), "off_overflow.off", 4,
                         {"non-finite", "'1e39'"}));
 }
 
 TEST(OffErrors, TruncatedInFaces) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_truncated_faces.off")), "off_truncated_faces.off",
-                        8, {"file ends after 2 of 3 faces"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_truncated_faces.off")),
+                        "off_truncated_faces.off", 8, {"file ends after 2 of 3 faces"}));
 }
 
 TEST(OffErrors, TruncatedInVertices) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_truncated_vertices.off")),
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_truncated_vertices.off")),
                         "off_truncated_vertices.off", 5, {"file ends after 2 of 4 vertices"}));
 }
 
 TEST(OffErrors, VertexWithTooFewNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_vertex_too_few_numbers.off")),
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_vertex_too_few_numbers.off")),
                         "off_vertex_too_few_numbers.off", 4, {"3, 6, 7 or 8 numbers", "got 2"}));
 }
 
 TEST(OffErrors, VertexWithFiveNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_vertex_5_numbers.off")),
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_vertex_5_numbers.off")),
                         "off_vertex_5_numbers.off", 3, {"3, 6, 7 or 8 numbers", "got 5"}));
 }
 
 TEST(OffErrors, VertexLayoutChanges) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_layout_mismatch.off")), "off_layout_mismatch.off",
-                        5, {"3 numbers", "first vertex (line 3) has 6", "same layout"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_layout_mismatch.off")),
+                        "off_layout_mismatch.off", 5,
+                        {"3 numbers", "first vertex (line 3) has 6", "same layout"}));
 }
 
 TEST(OffErrors, GarbageToken) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_garbage.off")), "off_garbage.off", 4,
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_garbage.off")), "off_garbage.off", 4,
                         {"expected a number", "'zero'"}));
 }
 
 TEST(OffErrors, FaceWithTwoVertices) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_face_too_few.off")), "off_face_too_few.off", 7,
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_too_few.off")), "off_face_too_few.off", 7,
                         {"at least 3 vertices", "n = 2"}));
 }
 
 TEST(OffErrors, FaceMissingAnIndex) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_face_missing_index.off")),
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_missing_index.off")),
                         "off_face_missing_index.off", 7,
                         {"face says 4 vertices but lists only 3 indices"}));
 }
 
 TEST(OffErrors, NonIntegerIndex) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_face_non_integer_index.off")),
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_non_integer_index.off")),
                         "off_face_non_integer_index.off", 6, {"vertex index", "'1.5'"}));
 }
 
 TEST(OffErrors, BadFaceCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(data("off_face_bad_count.off")), "off_face_bad_count.off", 6,
-                        {"vertex count n", "'three'"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_bad_count.off")),
+                        "off_face_bad_count.off", 6, {"vertex count n", "'three'"}));
 }
 
 TEST(OffErrors, MissingFileAndEmptyText) {
-    EXPECT_TRUE(
-        failsAt(facet::loadOff(data("no_such_file.off")), "no_such_file.off", 0, {"cannot open"}));
+    EXPECT_TRUE(failsAt(facet::loadOff(testData("no_such_file.off")), "no_such_file.off", 0,
+                        {"cannot open"}));
     EXPECT_TRUE(failsAt(facet::parseOff("", "empty.off"), "empty.off", 0, {"empty file"}));
     EXPECT_TRUE(
         failsAt(facet::parseOff("# only a comment\n\n", "c.off"), "c.off", 2, {"empty file"}));
@@ -419,7 +418,7 @@ TEST(OffWriter, CourseMonkeyRoundTrips) {
 TEST(OffWriter, UnwritablePathIsAnError) {
     Mesh m;
     m.positions = {{0, 0, 0}};
-    const auto s = facet::writeOff(m, data("no_such_folder/out.off"));
+    const auto s = facet::writeOff(m, testData("no_such_folder/out.off"));
     ASSERT_FALSE(s);
     EXPECT_NE(s.error().message.find("cannot open"), std::string::npos);
 }
@@ -428,7 +427,7 @@ TEST(OffWriter, UnwritablePathIsAnError) {
 // OBJ
 
 TEST(ObjLoader, TexturedQuadWithMaterial) {
-    auto r = facet::loadObj(data("obj_textured_quad.obj"));
+    auto r = facet::loadObj(testData("obj_textured_quad.obj"));
     expectLoaded(r);
     EXPECT_EQ(r->vertexCount(), 4u);
     EXPECT_EQ(r->triangleCount(), 2u);  // the quad is fanned
@@ -438,17 +437,17 @@ TEST(ObjLoader, TexturedQuadWithMaterial) {
     expectVec(r->uvs[2], {1, 0});
     expectVec(r->uvs[3], {0, 0.75f});
     EXPECT_FALSE(r->hasColors());
-    EXPECT_EQ(r->texturePath, data("texture_checker.png"));
+    EXPECT_EQ(r->texturePath, testData("texture_checker.png"));
 }
 
 TEST(ObjLoader, MissingMapKdIsKeptResolved) {
-    auto r = facet::loadObj(data("obj_missing_texture.obj"));
+    auto r = facet::loadObj(testData("obj_missing_texture.obj"));
     expectLoaded(r);
-    EXPECT_EQ(r->texturePath, data("textures/not_here.png"));
+    EXPECT_EQ(r->texturePath, testData("textures/not_here.png"));
 }
 
 TEST(ObjLoader, VertexColors) {
-    auto r = facet::loadObj(data("obj_colors.obj"));
+    auto r = facet::loadObj(testData("obj_colors.obj"));
     expectLoaded(r);
     ASSERT_EQ(r->colors.size(), 3u);
     expectVec(r->colors[0], {1, 0, 0});
@@ -457,7 +456,7 @@ TEST(ObjLoader, VertexColors) {
 }
 
 TEST(ObjLoader, PolygonsWithRelativeIndicesAreFanned) {
-    auto r = facet::loadObj(data("obj_polygons.obj"));
+    auto r = facet::loadObj(testData("obj_polygons.obj"));
     expectLoaded(r);
     EXPECT_EQ(r->vertexCount(), 9u);
     EXPECT_EQ(r->indices,
@@ -468,7 +467,7 @@ TEST(ObjLoader, PolygonsWithRelativeIndicesAreFanned) {
 }
 
 TEST(ObjLoader, PositionTexcoordPairsAreMerged) {
-    auto r = facet::loadObj(data("obj_uv_seam.obj"));
+    auto r = facet::loadObj(testData("obj_uv_seam.obj"));
     expectLoaded(r);
     EXPECT_EQ(r->vertexCount(), 5u);  // vertex 3 is split along the seam, vertex 2 is shared
     EXPECT_EQ(r->indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 4}));
@@ -478,7 +477,7 @@ TEST(ObjLoader, PositionTexcoordPairsAreMerged) {
 }
 
 TEST(ObjLoader, SharedModels) {
-    REQUIRE_SHARED_DATA(shared("models"));
+    REQUIRE_SHARED_DATA(sharedData("models"));
     struct Case {
         const char* file;
         std::size_t triangles;
@@ -487,7 +486,7 @@ TEST(ObjLoader, SharedModels) {
                           Case{"stanford-bunny.obj", 69451}, Case{"suzanne.obj", 968},
                           Case{"teapot.obj", 6320}, Case{"spot_triangulated.obj", 5856}}) {
         SCOPED_TRACE(c.file);
-        auto r = facet::loadMesh(shared(std::string("models/") + c.file));
+        auto r = facet::loadMesh(sharedData(std::string("models/") + c.file));
         expectLoaded(r);
         EXPECT_EQ(r->triangleCount(), c.triangles);
         EXPECT_FALSE(r->hasColors());
@@ -495,8 +494,8 @@ TEST(ObjLoader, SharedModels) {
 }
 
 TEST(ObjLoader, StanfordBunny) {
-    REQUIRE_SHARED_DATA(shared("models/stanford-bunny.obj"));
-    auto r = facet::loadObj(shared("models/stanford-bunny.obj"));
+    REQUIRE_SHARED_DATA(sharedData("models/stanford-bunny.obj"));
+    auto r = facet::loadObj(sharedData("models/stanford-bunny.obj"));
     expectLoaded(r);
     EXPECT_EQ(r->triangleCount(), 69451u);
     EXPECT_EQ(r->vertexCount(), 34834u);  // of 35947 `v` lines: unused ones are dropped
@@ -505,8 +504,8 @@ TEST(ObjLoader, StanfordBunny) {
 }
 
 TEST(ObjLoader, SpotHasFlippedUvs) {
-    REQUIRE_SHARED_DATA(shared("models/spot_triangulated.obj"));
-    auto r = facet::loadObj(shared("models/spot_triangulated.obj"));
+    REQUIRE_SHARED_DATA(sharedData("models/spot_triangulated.obj"));
+    auto r = facet::loadObj(sharedData("models/spot_triangulated.obj"));
     expectLoaded(r);
     EXPECT_EQ(r->triangleCount(), 5856u);
     ASSERT_TRUE(r->hasUvs());
@@ -520,80 +519,80 @@ TEST(ObjLoader, SpotHasFlippedUvs) {
 }
 
 TEST(ObjErrors, IndexOutOfRange) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_bad_index.obj")), "obj_bad_index.obj", 7,
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_index.obj")), "obj_bad_index.obj", 7,
                         {"out of range", "vertex 9", "has 4"}));
 }
 
 TEST(ObjErrors, IndexOutOfRangeInPolygon) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_bad_polygon_index.obj")),
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_polygon_index.obj")),
                         "obj_bad_polygon_index.obj", 7, {"out of range", "vertex 50"}));
 }
 
 TEST(ObjErrors, TexcoordIndexOutOfRange) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_bad_texcoord_index.obj")),
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_texcoord_index.obj")),
                         "obj_bad_texcoord_index.obj", 6,
                         {"texture coordinate index out of range", "vt 3"}));
 }
 
 TEST(ObjErrors, NaN) {
-    EXPECT_TRUE(
-        failsAt(facet::loadObj(data("obj_nan.obj")), "obj_nan.obj", 3, {"non-finite", "'nan'"}));
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_nan.obj")), "obj_nan.obj", 3,
+                        {"non-finite", "'nan'"}));
 }
 
 TEST(ObjErrors, Inf) {
-    EXPECT_TRUE(
-        failsAt(facet::loadObj(data("obj_inf.obj")), "obj_inf.obj", 2, {"non-finite", "'inf'"}));
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_inf.obj")), "obj_inf.obj", 2,
+                        {"non-finite", "'inf'"}));
 }
 
 TEST(ObjErrors, GarbageCoordinate) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_garbage.obj")), "obj_garbage.obj", 3,
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_garbage.obj")), "obj_garbage.obj", 3,
                         {"expected a number", "'abc'"}));
 }
 
 TEST(ObjErrors, VertexWithTwoNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_vertex_two_numbers.obj")),
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_vertex_two_numbers.obj")),
                         "obj_vertex_two_numbers.obj", 2, {"3 numbers", "got 2"}));
 }
 
 TEST(ObjErrors, ZeroIndex) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_zero_index.obj")), "obj_zero_index.obj", 4,
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_zero_index.obj")), "obj_zero_index.obj", 4,
                         {"index 0", "start at 1"}));
 }
 
 TEST(ObjErrors, BadCorner) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_bad_corner.obj")), "obj_bad_corner.obj", 5,
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_corner.obj")), "obj_bad_corner.obj", 5,
                         {"face corner", "'1/x'"}));
 }
 
 TEST(ObjErrors, FaceWithTwoVertices) {
-    EXPECT_TRUE(failsAt(facet::loadObj(data("obj_face_two_vertices.obj")),
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_face_two_vertices.obj")),
                         "obj_face_two_vertices.obj", 4, {"at least 3 vertices"}));
 }
 
 TEST(ObjErrors, NoFaces) {
     EXPECT_TRUE(
-        failsAt(facet::loadObj(data("obj_no_faces.obj")), "obj_no_faces.obj", 0, {"no faces"}));
+        failsAt(facet::loadObj(testData("obj_no_faces.obj")), "obj_no_faces.obj", 0, {"no faces"}));
 }
 
 TEST(ObjErrors, MissingFile) {
-    EXPECT_TRUE(
-        failsAt(facet::loadObj(data("no_such_file.obj")), "no_such_file.obj", 0, {"cannot open"}));
+    EXPECT_TRUE(failsAt(facet::loadObj(testData("no_such_file.obj")), "no_such_file.obj", 0,
+                        {"cannot open"}));
 }
 
 // ---------------------------------------------------------------------------------------------
 // loadMesh dispatch
 
 TEST(LoadMesh, ExtensionIsCaseInsensitive) {
-    auto r = facet::loadMesh(data("mesh_square_upper.OFF"));
+    auto r = facet::loadMesh(testData("mesh_square_upper.OFF"));
     expectLoaded(r);
     EXPECT_EQ(r->triangleCount(), 2u);
-    auto o = facet::loadMesh(data("obj_colors.obj"));
+    auto o = facet::loadMesh(testData("obj_colors.obj"));
     expectLoaded(o);
     EXPECT_EQ(o->triangleCount(), 1u);
 }
 
 TEST(LoadMesh, UnknownExtensionNamesTheFile) {
-    EXPECT_TRUE(failsAt(facet::loadMesh(data("texture_checker.png")), "texture_checker.png", 0,
+    EXPECT_TRUE(failsAt(facet::loadMesh(testData("texture_checker.png")), "texture_checker.png", 0,
                         {"unknown mesh format", ".png", ".off or .obj"}));
     EXPECT_TRUE(failsAt(facet::loadMesh("no_extension"), "no_extension", 0, {"no extension"}));
 }
@@ -645,11 +644,11 @@ TEST(MeshQueries, CubeHas18Edges) {
 // Scenes: valid files
 
 TEST(SceneLoader, ValidScene) {
-    auto r = facet::loadScene(data("scene_valid.scene"));
+    auto r = facet::loadScene(testData("scene_valid.scene"));
     expectLoaded(r);
     const facet::Scene& s = *r;
-    EXPECT_EQ(s.path, data("scene_valid.scene"));
-    EXPECT_EQ(s.meshPath, data("mesh_square.off"));
+    EXPECT_EQ(s.path, testData("scene_valid.scene"));
+    EXPECT_EQ(s.meshPath, testData("mesh_square.off"));
     EXPECT_TRUE(s.texturePath.empty());
     EXPECT_EQ(s.mesh->triangleCount(), 2u);
     expectVec(s.camera.eye, {0, 0, -3});
@@ -668,7 +667,7 @@ TEST(SceneLoader, ValidScene) {
 }
 
 TEST(SceneLoader, CrlfScene) {
-    auto r = facet::loadScene(data("scene_crlf.scene"));
+    auto r = facet::loadScene(testData("scene_crlf.scene"));
     expectLoaded(r);
     EXPECT_EQ(r->camera.width, 320);
     EXPECT_EQ(r->lighting.material.s, 12.0);
@@ -689,65 +688,65 @@ TEST(SceneLoader, ParseFromMemoryWithBomCrlfAndTrailingComments) {
 }
 
 TEST(SceneLoader, FiveNumberLight) {
-    auto r = facet::loadScene(data("scene_light_5_numbers.scene"));
+    auto r = facet::loadScene(testData("scene_light_5_numbers.scene"));
     expectLoaded(r);
     EXPECT_EQ(r->lighting.light.position, glm::dvec4(1, 2, -4, 2));
     EXPECT_EQ(r->lighting.light.intensity, 0.75);  // the 5th number, not w (the course code's bug)
 }
 
 TEST(SceneLoader, DirectionalLight) {
-    auto r = facet::loadScene(data("scene_light_directional.scene"));
+    auto r = facet::loadScene(testData("scene_light_directional.scene"));
     expectLoaded(r);
     EXPECT_EQ(r->lighting.light.position, glm::dvec4(0, 0, -1, 0));
     EXPECT_EQ(r->lighting.light.intensity, 0.9);
 }
 
 TEST(SceneLoader, TextureLine) {
-    auto r = facet::loadScene(data("scene_texture.scene"));
+    auto r = facet::loadScene(testData("scene_texture.scene"));
     expectLoaded(r);
-    EXPECT_EQ(r->texturePath, data("texture_checker.png"));
+    EXPECT_EQ(r->texturePath, testData("texture_checker.png"));
     ASSERT_NE(r->texture, nullptr);  // loaded with the scene, mip chain and all
     EXPECT_GT(r->texture->levelCount(), 1);
 }
 
 TEST(SceneLoader, ObjMaterialTextureBecomesTheScenesTexture) {
-    auto r = facet::loadScene(data("scene_obj_texture.scene"));
+    auto r = facet::loadScene(testData("scene_obj_texture.scene"));
     expectLoaded(r);
-    EXPECT_EQ(r->mesh->texturePath, data("texture_checker.png"));
-    EXPECT_EQ(r->texturePath, data("texture_checker.png"));
+    EXPECT_EQ(r->mesh->texturePath, testData("texture_checker.png"));
+    EXPECT_EQ(r->texturePath, testData("texture_checker.png"));
     ASSERT_NE(r->texture, nullptr);
 }
 
 TEST(SceneLoader, SceneWithoutTextureHasNone) {
-    auto r = facet::loadScene(data("scene_valid.scene"));
+    auto r = facet::loadScene(testData("scene_valid.scene"));
     expectLoaded(r);
     EXPECT_EQ(r->texture, nullptr);
     EXPECT_TRUE(r->texturePath.empty());
 }
 
 TEST(SceneLoader, ReplacingTheTextureKeepsTheOldOneOnFailure) {
-    auto r = facet::loadScene(data("scene_texture.scene"));
+    auto r = facet::loadScene(testData("scene_texture.scene"));
     expectLoaded(r);
     const auto before = r->texture;
-    const facet::Status bad = facet::loadSceneTexture(*r, data("tex_not_an_image.png"));
+    const facet::Status bad = facet::loadSceneTexture(*r, testData("tex_not_an_image.png"));
     ASSERT_FALSE(bad);
     EXPECT_NE(bad.error().what().find("tex_not_an_image.png"), std::string::npos)
         << bad.error().what();
     EXPECT_EQ(r->texture, before);
-    EXPECT_EQ(r->texturePath, data("texture_checker.png"));
-    const facet::Status missing = facet::loadSceneTexture(*r, data("no_such_file.png"));
+    EXPECT_EQ(r->texturePath, testData("texture_checker.png"));
+    const facet::Status missing = facet::loadSceneTexture(*r, testData("no_such_file.png"));
     ASSERT_FALSE(missing);
     EXPECT_EQ(r->texture, before);
 
-    const facet::Status good = facet::loadSceneTexture(*r, data("tex_4x4.png"));
+    const facet::Status good = facet::loadSceneTexture(*r, testData("tex_4x4.png"));
     EXPECT_TRUE(good) << good.error().what();
     ASSERT_NE(r->texture, nullptr);
     EXPECT_EQ(r->texture->width(), 4);
-    EXPECT_EQ(r->texturePath, data("tex_4x4.png"));
+    EXPECT_EQ(r->texturePath, testData("tex_4x4.png"));
 }
 
 TEST(SceneLoader, CourseScenes) {
-    REQUIRE_SHARED_DATA(shared("course"));
+    REQUIRE_SHARED_DATA(sharedData("course"));
     {
         auto r = facet::loadScene(course("example0.scene"));
         expectLoaded(r);
@@ -811,18 +810,18 @@ TEST(SceneLoader, CourseScenes) {
 }
 
 TEST(SceneLoader, SharedScenes) {
-    REQUIRE_SHARED_DATA(shared("scenes"));
-    auto spot = facet::loadScene(shared("scenes/spot_1280x720.scene"));
+    REQUIRE_SHARED_DATA(sharedData("scenes"));
+    auto spot = facet::loadScene(sharedData("scenes/spot_1280x720.scene"));
     expectLoaded(spot);
     EXPECT_EQ(spot->mesh->triangleCount(), 5856u);
     EXPECT_TRUE(spot->mesh->hasUvs());
     EXPECT_EQ(spot->camera.width, 1280);
     EXPECT_EQ(spot->camera.height, 720);
     ASSERT_FALSE(spot->texturePath.empty());
-    EXPECT_TRUE(fs::equivalent(spot->texturePath, shared("models/spot_texture.png")));
-    EXPECT_TRUE(fs::equivalent(spot->meshPath, shared("models/spot_triangulated.obj")));
+    EXPECT_TRUE(fs::equivalent(spot->texturePath, sharedData("models/spot_texture.png")));
+    EXPECT_TRUE(fs::equivalent(spot->meshPath, sharedData("models/spot_triangulated.obj")));
 
-    auto bunny = facet::loadScene(shared("scenes/bunny_1920x1080.scene"));
+    auto bunny = facet::loadScene(sharedData("scenes/bunny_1920x1080.scene"));
     expectLoaded(bunny);
     EXPECT_EQ(bunny->mesh->triangleCount(), 69451u);
     EXPECT_EQ(bunny->camera.focal, 1950.0);
@@ -900,71 +899,71 @@ TEST(SceneLoader, ResolveScenePathRules) {
 // Scenes: errors
 
 TEST(SceneErrors, LightWithThreeNumbers) {
-    auto r = facet::loadScene(data("scene_light_3_numbers.scene"));
+    auto r = facet::loadScene(testData("scene_light_3_numbers.scene"));
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().what(), data("scene_light_3_numbers.scene") +
+    EXPECT_EQ(r.error().what(), testData("scene_light_3_numbers.scene") +
                                     ":16: point light needs 4 or 5 numbers (x y z Id | x y z w "
                                     "Id), got 3");
 }
 
 TEST(SceneErrors, LightWithSixNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_light_6_numbers.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_light_6_numbers.scene")),
                         "scene_light_6_numbers.scene", 16, {"4 or 5 numbers", "got 6"}));
 }
 
 TEST(SceneErrors, NegativeLightIntensity) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_light_negative_intensity.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_light_negative_intensity.scene")),
                         "scene_light_negative_intensity.scene", 16, {"Id must be >= 0", "-1"}));
 }
 
 TEST(SceneErrors, DirectionalLightWithoutDirection) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_light_zero_direction.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_light_zero_direction.scene")),
                         "scene_light_zero_direction.scene", 16, {"non-zero direction"}));
 }
 
 TEST(SceneErrors, MissingMesh) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_missing_mesh.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_missing_mesh.scene")),
                         "scene_missing_mesh.scene", 2, {"'does_not_exist.off'", "not found"}));
 }
 
 TEST(SceneErrors, MissingTexture) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_missing_texture.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_missing_texture.scene")),
                         "scene_missing_texture.scene", 20, {"'no_such_texture.png'", "not found"}));
 }
 
 TEST(SceneErrors, CorruptTextureNamesTheSceneLineAndTheImage) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_corrupt_texture.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_corrupt_texture.scene")),
                         "scene_corrupt_texture.scene", 20,
                         {"cannot load texture", "tex_not_an_image.png"}));
 }
 
 TEST(SceneErrors, MissingMapKdTextureNamesTheObj) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_obj_missing_texture.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_obj_missing_texture.scene")),
                         "obj_missing_texture.obj", 0, {"map_Kd", "not_here.png"}));
 }
 
 TEST(SceneErrors, MeshErrorKeepsTheMeshFileAndLine) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_bad_mesh.scene")), "off_bad_index.off", 10,
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_bad_mesh.scene")), "off_bad_index.off", 10,
                         {"out of range"}));
 }
 
 TEST(SceneErrors, MeshWithUnknownExtension) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_bad_mesh_extension.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_bad_mesh_extension.scene")),
                         "scene_bad_mesh_extension.scene", 2, {".off or .obj", "mesh_square.ply"}));
 }
 
 TEST(SceneErrors, EyeEqualsLook) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_eye_equals_look.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_eye_equals_look.scene")),
                         "scene_eye_equals_look.scene", 6, {"look-at point equals the camera"}));
 }
 
 TEST(SceneErrors, UpParallelToView) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_up_parallel.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_up_parallel.scene")),
                         "scene_up_parallel.scene", 8, {"up", "parallel"}));
 }
 
 TEST(SceneErrors, UpZero) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_up_zero.scene")), "scene_up_zero.scene", 8,
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_up_zero.scene")), "scene_up_zero.scene", 8,
                         {"up", "must not be zero"}));
 }
 
@@ -978,91 +977,91 @@ TEST(SceneErrors, UpNearlyParallelAtAnyScale) {
 }
 
 TEST(SceneErrors, FocalZero) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_focal_zero.scene")), "scene_focal_zero.scene",
-                        10, {"focal length must be > 0", "got 0"}));
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_focal_zero.scene")),
+                        "scene_focal_zero.scene", 10, {"focal length must be > 0", "got 0"}));
 }
 
 TEST(SceneErrors, FocalNegative) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_focal_negative.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_focal_negative.scene")),
                         "scene_focal_negative.scene", 10, {"focal length must be > 0", "-256"}));
 }
 
 TEST(SceneErrors, SizeZero) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_size_zero.scene")), "scene_size_zero.scene",
-                        12, {"width", "1 to 16384", "got 0"}));
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_zero.scene")),
+                        "scene_size_zero.scene", 12, {"width", "1 to 16384", "got 0"}));
 }
 
 TEST(SceneErrors, SizeTooLarge) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_size_too_large.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_too_large.scene")),
                         "scene_size_too_large.scene", 12, {"height", "1 to 16384", "got 20000"}));
 }
 
 TEST(SceneErrors, SizeNotInteger) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_size_non_integer.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_non_integer.scene")),
                         "scene_size_non_integer.scene", 12, {"integers", "'320.5'"}));
 }
 
 TEST(SceneErrors, SizeWithOneNumber) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_size_one_number.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_one_number.scene")),
                         "scene_size_one_number.scene", 12, {"needs 2 integers (w h), got 1"}));
 }
 
 TEST(SceneErrors, TooManyNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_too_many_numbers.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_too_many_numbers.scene")),
                         "scene_too_many_numbers.scene", 4,
                         {"camera position needs 3 numbers (x y z), got 4"}));
 }
 
 TEST(SceneErrors, GarbageToken) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_garbage_token.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_garbage_token.scene")),
                         "scene_garbage_token.scene", 6,
                         {"look-at point: expected a number, got 'zero'"}));
 }
 
 TEST(SceneErrors, TrailingGarbage) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_trailing_garbage.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_trailing_garbage.scene")),
                         "scene_trailing_garbage.scene", 14, {"expected a number", "'abc'"}));
 }
 
 TEST(SceneErrors, NaN) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_nan.scene")), "scene_nan.scene", 4,
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_nan.scene")), "scene_nan.scene", 4,
                         {"camera position", "non-finite", "'nan'"}));
 }
 
 TEST(SceneErrors, Inf) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_inf.scene")), "scene_inf.scene", 10,
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_inf.scene")), "scene_inf.scene", 10,
                         {"focal length", "non-finite", "'inf'"}));
 }
 
 TEST(SceneErrors, NegativeAmbient) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_negative_ambient.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_negative_ambient.scene")),
                         "scene_negative_ambient.scene", 14, {"Ia must be >= 0", "-0.5"}));
 }
 
 TEST(SceneErrors, NegativeMaterial) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_material_negative.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_material_negative.scene")),
                         "scene_material_negative.scene", 18, {">= 0", "Kd = -0.6"}));
 }
 
 TEST(SceneErrors, MaterialWithThreeNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_material_3_numbers.scene")),
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_material_3_numbers.scene")),
                         "scene_material_3_numbers.scene", 18,
                         {"material needs 4 numbers (Ka Kd Ks s), got 3"}));
 }
 
 TEST(SceneErrors, Truncated) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_truncated.scene")), "scene_truncated.scene",
-                        14, {"file ends before the point light line"}));
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_truncated.scene")),
+                        "scene_truncated.scene", 14, {"file ends before the point light line"}));
 }
 
 TEST(SceneErrors, ExtraLine) {
-    EXPECT_TRUE(failsAt(facet::loadScene(data("scene_extra_line.scene")), "scene_extra_line.scene",
-                        22, {"at most 10 fields"}));
+    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_extra_line.scene")),
+                        "scene_extra_line.scene", 22, {"at most 10 fields"}));
 }
 
 TEST(SceneErrors, MissingSceneFile) {
     EXPECT_TRUE(
-        failsAt(facet::loadScene(data("no_such.scene")), "no_such.scene", 0, {"cannot open"}));
+        failsAt(facet::loadScene(testData("no_such.scene")), "no_such.scene", 0, {"cannot open"}));
     EXPECT_TRUE(failsAt(facet::loadScene(FACET_TEST_DATA), "data", 0, {"folder"}));
 }
 

@@ -306,7 +306,7 @@ TEST(NormalsPerPosition, OffVerticesAreEachTheirOwnPosition) {
 }
 
 TEST(NormalsFromTheFile, SuzannesVnAreUsed) {
-    const std::string path = std::string(FACET_SHARED_DIR) + "/data/models/suzanne.obj";
+    const std::string path = facet::test::sharedData("models/suzanne.obj");
     REQUIRE_SHARED_DATA(path);
     const auto m = facet::loadObj(path);
     ASSERT_TRUE(m) << m.error().what();

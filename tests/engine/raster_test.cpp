@@ -16,6 +16,7 @@
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "shared_data.hpp"
+#include "test_scenes.hpp"
 
 namespace facet {
 namespace {
@@ -161,17 +162,11 @@ TEST(FillRule, JitteredPlaneInPerspectiveCoversItsOutlineExactlyOnce) {
     const Mesh grid = makeJitteredGrid(60, 60, 0.2f, 7u);  // 7200 triangles, boundary not jittered
     for (double angleDeg : {0.0, 35.0, 60.0, 80.0}) {
         const double a = angleDeg * std::numbers::pi / 180.0;
-        Camera cam;
-        cam.look = {0.5, 0.5, 0.0};
-        cam.eye = cam.look + 1.6 * glm::dvec3(0.0, -std::sin(a), -std::cos(a)) +
-                  glm::dvec3(0.07, 0.0, 0.0);
-        cam.up = {0.0, -1.0, 0.0};
-        cam.focal = 300.0;
-        cam.width = 320;
-        cam.height = 240;
-        const glm::mat4 m(clipFromWorld(cam));
-        std::vector<glm::vec4> clip;
-        for (const auto& p : grid.positions) clip.push_back(m * glm::vec4(p, 1.0f));
+        const glm::dvec3 look{0.5, 0.5, 0.0};
+        const Camera cam = test::lookAt(
+            look + 1.6 * glm::dvec3(0.0, -std::sin(a), -std::cos(a)) + glm::dvec3(0.07, 0.0, 0.0),
+            look, 300.0, 320, 240);
+        const std::vector<glm::vec4> clip = test::clipPositions(cam, grid.positions);
         Renderer r;
         std::vector<std::uint16_t> counts;
         r.countCoverage({.clip = clip, .indices = grid.indices, .nearPlane = 0.01f},
@@ -211,9 +206,7 @@ TEST(FillRule, JitteredPlaneInPerspectiveCoversItsOutlineExactlyOnce) {
 /// For a closed, consistently wound surface seen from outside, every pixel centre is crossed as
 /// often by front faces as by back faces: total coverage = 2 × front coverage, exactly.
 void expectClosedSurfaceBalanced(const Mesh& mesh, const Camera& cam, const std::string& what) {
-    const glm::mat4 m(clipFromWorld(cam));
-    std::vector<glm::vec4> clip;
-    for (const auto& p : mesh.positions) clip.push_back(m * glm::vec4(p, 1.0f));
+    const std::vector<glm::vec4> clip = test::clipPositions(cam, mesh.positions);
     Renderer r;
     std::vector<std::uint16_t> all, front;
     RenderSettings s;
@@ -233,15 +226,9 @@ void expectClosedSurfaceBalanced(const Mesh& mesh, const Camera& cam, const std:
 Camera orbitCamera(double yawDeg, double pitchDeg, double distance, int w, int h, double focal) {
     const double yaw = yawDeg * std::numbers::pi / 180.0,
                  pitch = pitchDeg * std::numbers::pi / 180.0;
-    Camera c;
-    c.look = {0.0, 0.0, 0.0};
-    c.eye = distance * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                  std::cos(pitch) * std::cos(yaw));
-    c.up = {0.0, -1.0, 0.0};
-    c.focal = focal;
-    c.width = w;
-    c.height = h;
-    return c;
+    const glm::dvec3 eye = distance * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                                 std::cos(pitch) * std::cos(yaw));
+    return test::lookAt(eye, {0.0, 0.0, 0.0}, focal, w, h);
 }
 
 TEST(Watertight, ClosedMeshesHaveNoCracksOrDoubleEdges) {

@@ -26,7 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace facet;
 
-const std::string kShared = std::string(FACET_SHARED_DIR) + "/data";
+const std::string kShared = facet::test::sharedDir() + "/data";
 
 class SceneIo : public ::testing::Test {
   protected:

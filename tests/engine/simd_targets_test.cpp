@@ -29,6 +29,7 @@
 #include "scene_cases.hpp"
 #include "shading/fragment.hpp"
 #include "shading/span_loop.hpp"
+#include "test_scenes.hpp"
 #include "world_at.hpp"
 
 namespace facet::test {
@@ -173,10 +174,7 @@ void expectEveryTargetGivesTheScalarImage(const Scene& scene, const std::string&
 // the settings whose variants have a multisampled span loop: vertex colours, both lightings,
 // depth, the vector bilinear texel and the lane-by-lane texture shading.
 TEST_P(SimdTargets, EveryTargetGivesTheScalarSamples) {
-    std::string error;
-    REQUIRE_SHARED_DATA(sharedScenePath(GetParam()));
-    const Scene* loaded = loadCached(GetParam(), error);
-    ASSERT_NE(loaded, nullptr) << error;
+    REQUIRE_SHARED_SCENE(loaded, GetParam());
     Scene scene = *loaded;
     scene.camera = resizedCamera(scene.camera, 320, 180);
     for (const SceneCase& c : settingsCases(GetParam())) {
@@ -278,10 +276,7 @@ TEST_F(SimdTargetsMsaa, SharedEdgesAndDepthTiesGiveTheScalarSamples) {
 }
 
 TEST_P(SimdTargets, EveryTargetGivesTheScalarImage) {
-    std::string error;
-    REQUIRE_SHARED_DATA(sharedScenePath(GetParam()));
-    const Scene* scene = loadCached(GetParam(), error);
-    ASSERT_NE(scene, nullptr) << error;
+    REQUIRE_SHARED_SCENE(scene, GetParam());
     expectEveryTargetGivesTheScalarImage(*scene, GetParam());
 }
 
@@ -300,24 +295,15 @@ Scene smallTriangleScene(const Scene& textured) {
     }
     for (const std::uint32_t i : sphere.indices)
         twice.indices.push_back(i + static_cast<std::uint32_t>(n));
-    Scene scene;
-    scene.mesh = std::make_shared<const Mesh>(std::move(twice));
+    Scene scene = test::sceneOf(std::move(twice),
+                                test::lookAt({0.0, 0.0, 3.0}, {0.0, 0.0, 0.0}, 260.0, 301, 197));
     scene.texture = textured.texture;
     scene.lighting = textured.lighting;
-    scene.camera.eye = {0.0, 0.0, 3.0};
-    scene.camera.look = {0.0, 0.0, 0.0};
-    scene.camera.up = {0.0, -1.0, 0.0};
-    scene.camera.width = 301;
-    scene.camera.height = 197;
-    scene.camera.focal = 260.0;
     return scene;
 }
 
 TEST(SimdTargetsSmallTriangles, EveryTargetGivesTheScalarImage) {
-    std::string error;
-    REQUIRE_SHARED_DATA(sharedScenePath("course/example_textured"));
-    const Scene* textured = loadCached("course/example_textured", error);
-    ASSERT_NE(textured, nullptr) << error;
+    REQUIRE_SHARED_SCENE(textured, "course/example_textured");
     ASSERT_NE(textured->texture, nullptr);
     expectEveryTargetGivesTheScalarImage(smallTriangleScene(*textured), "small_triangles");
 }

@@ -32,20 +32,17 @@
 #include "reference/samplers.hpp"
 #include "shading/samplers.hpp"
 #include "shared_data.hpp"
+#include "test_files.hpp"
 
 namespace facet {
 namespace {
 
+using facet::test::sharedData;
+using facet::test::testData;
+
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr double kLsb = 1.0 / 255.0;
-
-std::string data(const std::string& name) {
-    return std::string(FACET_TEST_DATA) + "/" + name;
-}
-std::string shared(const std::string& name) {
-    return facet::test::sharedData(name);
-}
 
 /// A texture whose texel (x, y) is fn(x, y), packed RGBA.
 template <class Fn>
@@ -287,7 +284,7 @@ TEST(TextureBilinear, DefaultTextureIsWhite) {
 // ---- Mip chain ------------------------------------------------------------------------------
 
 TEST(TextureMips, ChainOfAKnownImage) {
-    const Result<Texture> t = loadTexture(data("tex_4x4.png"));
+    const Result<Texture> t = loadTexture(testData("tex_4x4.png"));
     ASSERT_TRUE(t.ok()) << t.error().what();
     ASSERT_EQ(t->levelCount(), 3);
     const MipLevel& l0 = t->level(0);
@@ -354,7 +351,7 @@ TEST(TextureMips, OddSidesAreAreaWeighted) {
     // weights 1, 1, ½ → R = (0 + 50 + 50)/2.5 = 40; texel 1 covers [2.5, 5) → (50 + 150 + 200)/2.5
     // = 160. Every texel covers all three rows: G = 100. Nothing is skipped or counted twice, so
     // level 2 is the mean of the image, (100, 100, 7).
-    const Result<Texture> t = loadTexture(data("tex_5x3.bmp"));
+    const Result<Texture> t = loadTexture(testData("tex_5x3.bmp"));
     ASSERT_TRUE(t.ok()) << t.error().what();
     ASSERT_EQ(t->levelCount(), 3);
     EXPECT_EQ(t->level(1).at(0, 0), packRgba(40, 100, 7));
@@ -564,17 +561,17 @@ TEST(TextureFastVsReference, ExtremeCoordinatesAgree) {
 
 TEST(TextureLoad, FormatsAndOrientation) {
     // Grey expands to r = g = b with opaque alpha; 3×2 reduces to 1×1, the mean 127.5 → 128.
-    const Result<Texture> grey = loadTexture(data("tex_gray_3x2.png"));
+    const Result<Texture> grey = loadTexture(testData("tex_gray_3x2.png"));
     ASSERT_TRUE(grey.ok()) << grey.error().what();
     EXPECT_EQ(grey->width(), 3);
     EXPECT_EQ(grey->height(), 2);
     EXPECT_EQ(grey->level(0).at(1, 0), packRgba(51, 51, 51));
     EXPECT_EQ(grey->level(0).at(2, 1), packRgba(255, 255, 255));
     EXPECT_EQ(grey->level(1).at(0, 0), packRgba(128, 128, 128));
-    EXPECT_EQ(grey->name(), data("tex_gray_3x2.png"));
+    EXPECT_EQ(grey->name(), testData("tex_gray_3x2.png"));
 
     // BMP and TGA are stored bottom-up; row 0 must still be the top of the picture (v = 0).
-    const Result<Texture> bmp = loadTexture(data("tex_5x3.bmp"));
+    const Result<Texture> bmp = loadTexture(testData("tex_5x3.bmp"));
     ASSERT_TRUE(bmp.ok()) << bmp.error().what();
     EXPECT_EQ(bmp->width(), 5);
     EXPECT_EQ(bmp->height(), 3);
@@ -583,7 +580,7 @@ TEST(TextureLoad, FormatsAndOrientation) {
             EXPECT_EQ(bmp->level(0).at(x, y), packRgba(static_cast<std::uint32_t>(50 * x),
                                                        static_cast<std::uint32_t>(100 * y), 7));
 
-    const Result<Texture> tga = loadTexture(data("tex_2x2.tga"));
+    const Result<Texture> tga = loadTexture(testData("tex_2x2.tga"));
     ASSERT_TRUE(tga.ok()) << tga.error().what();
     EXPECT_EQ(tga->level(0).at(0, 0), packRgba(255, 0, 0));
     EXPECT_EQ(tga->level(0).at(1, 0), packRgba(0, 255, 0));
@@ -593,7 +590,7 @@ TEST(TextureLoad, FormatsAndOrientation) {
 }
 
 TEST(TextureLoad, SharedImages) {
-    REQUIRE_SHARED_DATA(shared("course"));
+    REQUIRE_SHARED_DATA(sharedData("course"));
     struct Want {
         std::string file;
         int w, h, levels;
@@ -601,7 +598,7 @@ TEST(TextureLoad, SharedImages) {
     for (const Want& want :
          {Want{"course/brick.jpg", 512, 512, 10}, Want{"course/world_map.jpg", 512, 256, 10},
           Want{"models/spot_texture.png", 1024, 1024, 11}}) {
-        const Result<Texture> t = loadTexture(shared(want.file));
+        const Result<Texture> t = loadTexture(sharedData(want.file));
         ASSERT_TRUE(t.ok()) << t.error().what();
         EXPECT_EQ(t->width(), want.w) << want.file;
         EXPECT_EQ(t->height(), want.h) << want.file;
@@ -628,20 +625,23 @@ TEST(TextureLoad, SharedImages) {
 }
 
 TEST(TextureLoad, BadFilesGiveClearErrors) {
-    EXPECT_TRUE(failsWith(data("tex_no_such_file.png"), "cannot open"));
-    EXPECT_TRUE(failsWith(data("tex_empty.png"), "empty"));
-    EXPECT_TRUE(failsWith(data("tex_truncated.png"), "damaged or truncated"));
-    EXPECT_TRUE(failsWith(data("tex_not_an_image.png"), "not a readable PNG, JPEG, BMP or TGA"));
-    EXPECT_TRUE(failsWith(data("tex_zero_width.png"), "0x4 pixels"));
-    EXPECT_TRUE(failsWith(data("tex_huge.png"), "20000x20000 pixels"));  // stb's refusal
-    EXPECT_TRUE(failsWith(data("tex_wide.png"), "16385x1 pixels"));      // the engine's limit
-    EXPECT_TRUE(failsWith(data("tex_wide.png"), "1 to 16384"));
+    EXPECT_TRUE(failsWith(testData("tex_no_such_file.png"), "cannot open"));
+    EXPECT_TRUE(failsWith(testData("tex_empty.png"), "empty"));
+    EXPECT_TRUE(failsWith(testData("tex_truncated.png"), "damaged or truncated"));
+    EXPECT_TRUE(
+        failsWith(testData("tex_not_an_image.png"), "not a readable PNG, JPEG, BMP or TGA"));
+    EXPECT_TRUE(failsWith(testData("tex_zero_width.png"), "0x4 pixels"));
+    EXPECT_TRUE(failsWith(testData("tex_huge.png"), "20000x20000 pixels"));  // stb's refusal
+    EXPECT_TRUE(failsWith(testData("tex_wide.png"), "16385x1 pixels"));      // the engine's limit
+    EXPECT_TRUE(failsWith(testData("tex_wide.png"), "1 to 16384"));
     EXPECT_TRUE(failsWith(std::string(FACET_TEST_DATA), "folder"));
     // A mesh is not an image either.
-    EXPECT_TRUE(failsWith(data("mesh_square.off"), "not a readable"));
+    EXPECT_TRUE(failsWith(testData("mesh_square.off"), "not a readable"));
     // The messages are printable for the log.
-    std::printf("[texture] %s\n", loadTexture(data("tex_truncated.png")).error().what().c_str());
-    std::printf("[texture] %s\n", loadTexture(data("tex_not_an_image.png")).error().what().c_str());
+    std::printf("[texture] %s\n",
+                loadTexture(testData("tex_truncated.png")).error().what().c_str());
+    std::printf("[texture] %s\n",
+                loadTexture(testData("tex_not_an_image.png")).error().what().c_str());
 }
 
 TEST(TextureLoad, FromRgbaChecksItsInput) {

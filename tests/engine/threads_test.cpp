@@ -15,6 +15,7 @@
 #include "facet/procedural.hpp"
 #include "facet/render.hpp"
 #include "scene_cases.hpp"
+#include "test_scenes.hpp"
 
 namespace {
 
@@ -55,10 +56,7 @@ class ThreadCount : public testing::TestWithParam<ThreadCase> {};
 // counters.
 TEST_P(ThreadCount, GivesTheOneThreadImage) {
     const ThreadCase& c = GetParam();
-    REQUIRE_SHARED_DATA(sharedScenePath(c.scene.scene));
-    std::string error;
-    const Scene* scene = loadCached(c.scene.scene, error);
-    ASSERT_NE(scene, nullptr) << error;
+    REQUIRE_SHARED_SCENE(scene, c.scene.scene);
     RenderSettings settings = settingsFor(c.scene);
     settings.threads = 1;
     Renderer one, many;
@@ -105,21 +103,13 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ThreadCount, testing::ValuesIn(threadCases()), 
 // A closed mesh covers every pixel inside its silhouette exactly twice (front and back), whatever
 // the tiling: pixels on tile borders are neither lost nor drawn twice by neighbouring tiles.
 TEST(Tiles, BordersNeitherDropNorDoublePixels) {
-    Scene scene;
-    scene.mesh = std::make_shared<const facet::Mesh>(makeUvSphere(48, 96));
-    scene.camera.eye = {0.0, 0.0, 3.0};
-    scene.camera.look = {0.0, 0.0, 0.0};
-    scene.camera.up = {0.0, -1.0, 0.0};
-    scene.camera.width = 301;  // not a multiple of the tile size
-    scene.camera.height = 197;
-    scene.camera.focal = 260.0;
+    // 301×197: not a multiple of the tile size.
+    const Scene scene = test::sceneOf(
+        makeUvSphere(48, 96), test::lookAt({0.0, 0.0, 3.0}, {0.0, 0.0, 0.0}, 260.0, 301, 197));
     Renderer renderer;
     RenderSettings settings;
     settings.threads = 2;
-    const glm::mat4 clipFromWorldF(clipFromWorld(scene.camera));
-    std::vector<glm::vec4> clip;
-    for (const glm::vec3& p : scene.mesh->positions)
-        clip.push_back(clipFromWorldF * glm::vec4(p, 1));
+    const std::vector<glm::vec4> clip = clipPositions(scene.camera, scene.mesh->positions);
     const DrawInput input{.clip = clip, .indices = scene.mesh->indices, .nearPlane = 1e-3f};
     std::vector<std::uint16_t> counts;
     renderer.countCoverage(input, settings, scene.camera.width, scene.camera.height, counts);
@@ -135,13 +125,8 @@ TEST(Tiles, BordersNeitherDropNorDoublePixels) {
 // After the first frame, frames of the same size allocate nothing: the engine keeps its scratch
 // buffers, bins and records. Counted for every shader family and thread count.
 TEST(Allocation, NoneAfterTheFirstFrame) {
-    REQUIRE_SHARED_DATA(sharedScenePath("scenes/bunny_1280x720"));
-    REQUIRE_SHARED_DATA(sharedScenePath("scenes/spot_1280x720"));
-    std::string error;
-    const Scene* bunny = loadCached("scenes/bunny_1280x720", error);
-    ASSERT_NE(bunny, nullptr) << error;
-    const Scene* spot = loadCached("scenes/spot_1280x720", error);
-    ASSERT_NE(spot, nullptr) << error;
+    REQUIRE_SHARED_SCENE(bunny, "scenes/bunny_1280x720");
+    REQUIRE_SHARED_SCENE(spot, "scenes/spot_1280x720");
     struct Run {
         const Scene* scene;
         RenderSettings settings;

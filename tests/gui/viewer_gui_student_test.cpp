@@ -87,7 +87,7 @@ TEST_F(ViewerGui, CtrlQAfterAnOrbitAsksOnceBeforeQuitting) {
     }
 }
 
-const std::string kShared = std::string(FACET_SHARED_DIR) + "/data/models/";
+const std::string kShared = facet::test::sharedData("models/");
 
 glm::dvec3 vec3Of(const std::map<std::string, std::string>& state, const std::string& key) {
     std::istringstream in(state.at(key));

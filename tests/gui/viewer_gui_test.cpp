@@ -229,7 +229,7 @@ TEST_F(ViewerGui, TheScreenshotKeySavesTheFrame) {
 // viewer's frame byte for byte, and the viewer's files went to its config folder.
 TEST_F(ViewerGui, CtrlSSavesABareModelAfterOrbitingAsASceneThatRendersTheFrame) {
     REQUIRE_XDOTOOL();
-    const std::string teapot = std::string(FACET_SHARED_DIR) + "/data/models/teapot.obj";
+    const std::string teapot = facet::test::sharedData("models/teapot.obj");
     REQUIRE_SHARED_DATA(teapot);
     const Outcome r = drive("save", "--size " + kWindow1280 + " " + teapot,
                             "FACET_DRIVE_SAVE_AS=" + path("teapot.scene"));

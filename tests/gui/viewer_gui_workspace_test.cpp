@@ -28,7 +28,7 @@ using namespace facet;
 using namespace viewer_gui;
 using facet::view::Rect;
 
-const std::string kShared = std::string(FACET_SHARED_DIR) + "/data";
+const std::string kShared = facet::test::sharedDir() + "/data";
 
 bool insideRect(const Rect& inner, const Rect& outer) {
     return inner.x >= outer.x && inner.y >= outer.y && inner.x + inner.w <= outer.x + outer.w &&
