@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <initializer_list>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,7 +41,7 @@ std::string course(const std::string& name) {
 // every one of `parts`.
 template <class T>
 testing::AssertionResult failsAt(const Result<T>& result, std::string_view file, int line,
-                                 std::initializer_list<std::string_view> parts) {
+                                 const std::vector<std::string_view>& parts) {
     if (result.ok()) return testing::AssertionFailure() << "loaded without an error";
     const facet::Error& e = result.error();
     const std::string& name = e.loc.file;
@@ -210,35 +210,73 @@ TEST(OffLoader, CourseCubeColors) {
 // ---------------------------------------------------------------------------------------------
 // OFF: errors
 
-TEST(OffErrors, BadMagic) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_bad_magic.off")), "off_bad_magic.off", 1,
-                        {"OFF or COFF", "'PLY'"}));
+/// A malformed file of tests/data and the error loading it must give: at `line` of that file,
+/// the message holding every one of `parts`. `name` names the case.
+struct BadFile {
+    const char* name;
+    const char* file;
+    int line;
+    std::vector<std::string_view> parts;
+};
+
+/// Names the case in gtest's messages.
+void PrintTo(const BadFile& f, std::ostream* os) {
+    *os << f.file;
 }
 
-TEST(OffErrors, NonIntegerCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_counts_non_integer.off")),
-                        "off_counts_non_integer.off", 3, {"face count NF", "'2.5'"}));
+/// Loads `file` with the loader its extension names (.off, .obj, .scene).
+testing::AssertionResult loadFailsAt(const BadFile& f) {
+    const std::string path = testData(f.file);
+    const std::string_view file = f.file;
+    if (file.ends_with(".off")) return failsAt(facet::loadOff(path), file, f.line, f.parts);
+    if (file.ends_with(".obj")) return failsAt(facet::loadObj(path), file, f.line, f.parts);
+    return failsAt(facet::loadScene(path), file, f.line, f.parts);
 }
 
-TEST(OffErrors, NegativeCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_counts_negative.off")),
-                        "off_counts_negative.off", 2, {"vertex count NV", "'-4'"}));
+class MalformedFile : public testing::TestWithParam<BadFile> {};
+
+TEST_P(MalformedFile, FailsAtItsLineNamingTheCause) {
+    EXPECT_TRUE(loadFailsAt(GetParam()));
 }
 
-TEST(OffErrors, MissingCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_counts_missing.off")),
-                        "off_counts_missing.off", 2, {"NV NF NE", "got 1"}));
+std::string badFileName(const testing::TestParamInfo<BadFile>& info) {
+    return info.param.name;
 }
 
-TEST(OffErrors, NoFaces) {
-    EXPECT_TRUE(
-        failsAt(facet::loadOff(testData("off_no_faces.off")), "off_no_faces.off", 2, {"no faces"}));
-}
-
-TEST(OffErrors, FacesWithoutVertices) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_faces_without_vertices.off")),
-                        "off_faces_without_vertices.off", 2, {"1 face", "no vertices"}));
-}
+// OFF files.
+const BadFile kOffErrors[] = {
+    {"BadMagic", "off_bad_magic.off", 1, {"OFF or COFF", "'PLY'"}},
+    {"NonIntegerCount", "off_counts_non_integer.off", 3, {"face count NF", "'2.5'"}},
+    {"NegativeCount", "off_counts_negative.off", 2, {"vertex count NV", "'-4'"}},
+    {"MissingCount", "off_counts_missing.off", 2, {"NV NF NE", "got 1"}},
+    {"NoFaces", "off_no_faces.off", 2, {"no faces"}},
+    {"FacesWithoutVertices", "off_faces_without_vertices.off", 2, {"1 face", "no vertices"}},
+    {"IndexOutOfRange", "off_bad_index.off", 10, {"vertex index 4", "out of range", "4 vertices"}},
+    {"NegativeIndex", "off_negative_index.off", 6, {"vertex index -1", "out of range"}},
+    {"NaN", "off_nan.off", 4, {"non-finite", "'nan'"}},
+    {"Inf", "off_inf.off", 5, {"non-finite", "'-inf'"}},
+    {"FloatOverflow", "off_overflow.off", 4, {"non-finite", "'1e39'"}},
+    {"TruncatedInFaces", "off_truncated_faces.off", 8, {"file ends after 2 of 3 faces"}},
+    {"TruncatedInVertices", "off_truncated_vertices.off", 5, {"file ends after 2 of 4 vertices"}},
+    {"VertexWithTooFewNumbers",
+     "off_vertex_too_few_numbers.off",
+     4,
+     {"3, 6, 7 or 8 numbers", "got 2"}},
+    {"VertexWithFiveNumbers", "off_vertex_5_numbers.off", 3, {"3, 6, 7 or 8 numbers", "got 5"}},
+    {"VertexLayoutChanges",
+     "off_layout_mismatch.off",
+     5,
+     {"3 numbers", "first vertex (line 3) has 6", "same layout"}},
+    {"GarbageToken", "off_garbage.off", 4, {"expected a number", "'zero'"}},
+    {"FaceWithTwoVertices", "off_face_too_few.off", 7, {"at least 3 vertices", "n = 2"}},
+    {"FaceMissingAnIndex",
+     "off_face_missing_index.off",
+     7,
+     {"face says 4 vertices but lists only 3 indices"}},
+    {"NonIntegerIndex", "off_face_non_integer_index.off", 6, {"vertex index", "'1.5'"}},
+    {"BadFaceCount", "off_face_bad_count.off", 6, {"vertex count n", "'three'"}},
+};
+INSTANTIATE_TEST_SUITE_P(OffErrors, MalformedFile, testing::ValuesIn(kOffErrors), badFileName);
 
 TEST(OffErrors, HugeHeaderFailsBeforeAllocating) {
     EXPECT_TRUE(failsAt(facet::loadOff(testData("off_huge_header.off")), "off_huge_header.off", 2,
@@ -250,83 +288,6 @@ TEST(OffErrors, HugeHeaderFailsBeforeAllocating) {
     // One vertex too many for the bytes that follow.
     EXPECT_TRUE(failsAt(facet::parseOff("OFF\n3 1 0\n0 0 0\n0 0 0\n3 0 1 2\n", "short.off"),
                         "short.off", 2, {"promises 3 vertices and 1 faces", "only 20 bytes"}));
-}
-
-TEST(OffErrors, IndexOutOfRange) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_bad_index.off")), "off_bad_index.off", 10,
-                        {"vertex index 4", "out of range", "4 vertices"}));
-}
-
-TEST(OffErrors, NegativeIndex) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_negative_index.off")),
-                        "off_negative_index.off", 6, {"vertex index -1", "out of range"}));
-}
-
-TEST(OffErrors, NaN) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_nan.off")), "off_nan.off", 4,
-                        {"non-finite", "'nan'"}));
-}
-
-TEST(OffErrors, Inf) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_inf.off")), "off_inf.off", 5,
-                        {"non-finite", "'-inf'"}));
-}
-
-TEST(OffErrors, FloatOverflow) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_overflow.off")), "off_overflow.off", 4,
-                        {"non-finite", "'1e39'"}));
-}
-
-TEST(OffErrors, TruncatedInFaces) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_truncated_faces.off")),
-                        "off_truncated_faces.off", 8, {"file ends after 2 of 3 faces"}));
-}
-
-TEST(OffErrors, TruncatedInVertices) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_truncated_vertices.off")),
-                        "off_truncated_vertices.off", 5, {"file ends after 2 of 4 vertices"}));
-}
-
-TEST(OffErrors, VertexWithTooFewNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_vertex_too_few_numbers.off")),
-                        "off_vertex_too_few_numbers.off", 4, {"3, 6, 7 or 8 numbers", "got 2"}));
-}
-
-TEST(OffErrors, VertexWithFiveNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_vertex_5_numbers.off")),
-                        "off_vertex_5_numbers.off", 3, {"3, 6, 7 or 8 numbers", "got 5"}));
-}
-
-TEST(OffErrors, VertexLayoutChanges) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_layout_mismatch.off")),
-                        "off_layout_mismatch.off", 5,
-                        {"3 numbers", "first vertex (line 3) has 6", "same layout"}));
-}
-
-TEST(OffErrors, GarbageToken) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_garbage.off")), "off_garbage.off", 4,
-                        {"expected a number", "'zero'"}));
-}
-
-TEST(OffErrors, FaceWithTwoVertices) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_too_few.off")), "off_face_too_few.off", 7,
-                        {"at least 3 vertices", "n = 2"}));
-}
-
-TEST(OffErrors, FaceMissingAnIndex) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_missing_index.off")),
-                        "off_face_missing_index.off", 7,
-                        {"face says 4 vertices but lists only 3 indices"}));
-}
-
-TEST(OffErrors, NonIntegerIndex) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_non_integer_index.off")),
-                        "off_face_non_integer_index.off", 6, {"vertex index", "'1.5'"}));
-}
-
-TEST(OffErrors, BadFaceCount) {
-    EXPECT_TRUE(failsAt(facet::loadOff(testData("off_face_bad_count.off")),
-                        "off_face_bad_count.off", 6, {"vertex count n", "'three'"}));
 }
 
 TEST(OffErrors, MissingFileAndEmptyText) {
@@ -518,66 +479,25 @@ TEST(ObjLoader, SpotHasFlippedUvs) {
     EXPECT_TRUE(r->texturePath.empty());  // spot has no mtllib; its scene names the texture
 }
 
-TEST(ObjErrors, IndexOutOfRange) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_index.obj")), "obj_bad_index.obj", 7,
-                        {"out of range", "vertex 9", "has 4"}));
-}
-
-TEST(ObjErrors, IndexOutOfRangeInPolygon) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_polygon_index.obj")),
-                        "obj_bad_polygon_index.obj", 7, {"out of range", "vertex 50"}));
-}
-
-TEST(ObjErrors, TexcoordIndexOutOfRange) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_texcoord_index.obj")),
-                        "obj_bad_texcoord_index.obj", 6,
-                        {"texture coordinate index out of range", "vt 3"}));
-}
-
-TEST(ObjErrors, NaN) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_nan.obj")), "obj_nan.obj", 3,
-                        {"non-finite", "'nan'"}));
-}
-
-TEST(ObjErrors, Inf) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_inf.obj")), "obj_inf.obj", 2,
-                        {"non-finite", "'inf'"}));
-}
-
-TEST(ObjErrors, GarbageCoordinate) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_garbage.obj")), "obj_garbage.obj", 3,
-                        {"expected a number", "'abc'"}));
-}
-
-TEST(ObjErrors, VertexWithTwoNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_vertex_two_numbers.obj")),
-                        "obj_vertex_two_numbers.obj", 2, {"3 numbers", "got 2"}));
-}
-
-TEST(ObjErrors, ZeroIndex) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_zero_index.obj")), "obj_zero_index.obj", 4,
-                        {"index 0", "start at 1"}));
-}
-
-TEST(ObjErrors, BadCorner) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_bad_corner.obj")), "obj_bad_corner.obj", 5,
-                        {"face corner", "'1/x'"}));
-}
-
-TEST(ObjErrors, FaceWithTwoVertices) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("obj_face_two_vertices.obj")),
-                        "obj_face_two_vertices.obj", 4, {"at least 3 vertices"}));
-}
-
-TEST(ObjErrors, NoFaces) {
-    EXPECT_TRUE(
-        failsAt(facet::loadObj(testData("obj_no_faces.obj")), "obj_no_faces.obj", 0, {"no faces"}));
-}
-
-TEST(ObjErrors, MissingFile) {
-    EXPECT_TRUE(failsAt(facet::loadObj(testData("no_such_file.obj")), "no_such_file.obj", 0,
-                        {"cannot open"}));
-}
+// OBJ files.
+const BadFile kObjErrors[] = {
+    {"IndexOutOfRange", "obj_bad_index.obj", 7, {"out of range", "vertex 9", "has 4"}},
+    {"IndexOutOfRangeInPolygon", "obj_bad_polygon_index.obj", 7, {"out of range", "vertex 50"}},
+    {"TexcoordIndexOutOfRange",
+     "obj_bad_texcoord_index.obj",
+     6,
+     {"texture coordinate index out of range", "vt 3"}},
+    {"NaN", "obj_nan.obj", 3, {"non-finite", "'nan'"}},
+    {"Inf", "obj_inf.obj", 2, {"non-finite", "'inf'"}},
+    {"GarbageCoordinate", "obj_garbage.obj", 3, {"expected a number", "'abc'"}},
+    {"VertexWithTwoNumbers", "obj_vertex_two_numbers.obj", 2, {"3 numbers", "got 2"}},
+    {"ZeroIndex", "obj_zero_index.obj", 4, {"index 0", "start at 1"}},
+    {"BadCorner", "obj_bad_corner.obj", 5, {"face corner", "'1/x'"}},
+    {"FaceWithTwoVertices", "obj_face_two_vertices.obj", 4, {"at least 3 vertices"}},
+    {"NoFaces", "obj_no_faces.obj", 0, {"no faces"}},
+    {"MissingFile", "no_such_file.obj", 0, {"cannot open"}},
+};
+INSTANTIATE_TEST_SUITE_P(ObjErrors, MalformedFile, testing::ValuesIn(kObjErrors), badFileName);
 
 // ---------------------------------------------------------------------------------------------
 // loadMesh dispatch
@@ -906,36 +826,57 @@ TEST(SceneErrors, LightWithThreeNumbers) {
                                     "Id), got 3");
 }
 
-TEST(SceneErrors, LightWithSixNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_light_6_numbers.scene")),
-                        "scene_light_6_numbers.scene", 16, {"4 or 5 numbers", "got 6"}));
-}
-
-TEST(SceneErrors, NegativeLightIntensity) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_light_negative_intensity.scene")),
-                        "scene_light_negative_intensity.scene", 16, {"Id must be >= 0", "-1"}));
-}
-
-TEST(SceneErrors, DirectionalLightWithoutDirection) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_light_zero_direction.scene")),
-                        "scene_light_zero_direction.scene", 16, {"non-zero direction"}));
-}
-
-TEST(SceneErrors, MissingMesh) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_missing_mesh.scene")),
-                        "scene_missing_mesh.scene", 2, {"'does_not_exist.off'", "not found"}));
-}
-
-TEST(SceneErrors, MissingTexture) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_missing_texture.scene")),
-                        "scene_missing_texture.scene", 20, {"'no_such_texture.png'", "not found"}));
-}
-
-TEST(SceneErrors, CorruptTextureNamesTheSceneLineAndTheImage) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_corrupt_texture.scene")),
-                        "scene_corrupt_texture.scene", 20,
-                        {"cannot load texture", "tex_not_an_image.png"}));
-}
+// .scene files.
+const BadFile kSceneErrors[] = {
+    {"LightWithSixNumbers", "scene_light_6_numbers.scene", 16, {"4 or 5 numbers", "got 6"}},
+    {"NegativeLightIntensity",
+     "scene_light_negative_intensity.scene",
+     16,
+     {"Id must be >= 0", "-1"}},
+    {"DirectionalLightWithoutDirection",
+     "scene_light_zero_direction.scene",
+     16,
+     {"non-zero direction"}},
+    {"MissingMesh", "scene_missing_mesh.scene", 2, {"'does_not_exist.off'", "not found"}},
+    {"MissingTexture", "scene_missing_texture.scene", 20, {"'no_such_texture.png'", "not found"}},
+    {"CorruptTextureNamesTheSceneLineAndTheImage",
+     "scene_corrupt_texture.scene",
+     20,
+     {"cannot load texture", "tex_not_an_image.png"}},
+    {"MeshWithUnknownExtension",
+     "scene_bad_mesh_extension.scene",
+     2,
+     {".off or .obj", "mesh_square.ply"}},
+    {"EyeEqualsLook", "scene_eye_equals_look.scene", 6, {"look-at point equals the camera"}},
+    {"UpParallelToView", "scene_up_parallel.scene", 8, {"up", "parallel"}},
+    {"UpZero", "scene_up_zero.scene", 8, {"up", "must not be zero"}},
+    {"FocalZero", "scene_focal_zero.scene", 10, {"focal length must be > 0", "got 0"}},
+    {"FocalNegative", "scene_focal_negative.scene", 10, {"focal length must be > 0", "-256"}},
+    {"SizeZero", "scene_size_zero.scene", 12, {"width", "1 to 16384", "got 0"}},
+    {"SizeTooLarge", "scene_size_too_large.scene", 12, {"height", "1 to 16384", "got 20000"}},
+    {"SizeNotInteger", "scene_size_non_integer.scene", 12, {"integers", "'320.5'"}},
+    {"SizeWithOneNumber", "scene_size_one_number.scene", 12, {"needs 2 integers (w h), got 1"}},
+    {"TooManyNumbers",
+     "scene_too_many_numbers.scene",
+     4,
+     {"camera position needs 3 numbers (x y z), got 4"}},
+    {"GarbageToken",
+     "scene_garbage_token.scene",
+     6,
+     {"look-at point: expected a number, got 'zero'"}},
+    {"TrailingGarbage", "scene_trailing_garbage.scene", 14, {"expected a number", "'abc'"}},
+    {"NaN", "scene_nan.scene", 4, {"camera position", "non-finite", "'nan'"}},
+    {"Inf", "scene_inf.scene", 10, {"focal length", "non-finite", "'inf'"}},
+    {"NegativeAmbient", "scene_negative_ambient.scene", 14, {"Ia must be >= 0", "-0.5"}},
+    {"NegativeMaterial", "scene_material_negative.scene", 18, {">= 0", "Kd = -0.6"}},
+    {"MaterialWithThreeNumbers",
+     "scene_material_3_numbers.scene",
+     18,
+     {"material needs 4 numbers (Ka Kd Ks s), got 3"}},
+    {"Truncated", "scene_truncated.scene", 14, {"file ends before the point light line"}},
+    {"ExtraLine", "scene_extra_line.scene", 22, {"at most 10 fields"}},
+};
+INSTANTIATE_TEST_SUITE_P(SceneErrors, MalformedFile, testing::ValuesIn(kSceneErrors), badFileName);
 
 TEST(SceneErrors, MissingMapKdTextureNamesTheObj) {
     EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_obj_missing_texture.scene")),
@@ -947,26 +888,6 @@ TEST(SceneErrors, MeshErrorKeepsTheMeshFileAndLine) {
                         {"out of range"}));
 }
 
-TEST(SceneErrors, MeshWithUnknownExtension) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_bad_mesh_extension.scene")),
-                        "scene_bad_mesh_extension.scene", 2, {".off or .obj", "mesh_square.ply"}));
-}
-
-TEST(SceneErrors, EyeEqualsLook) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_eye_equals_look.scene")),
-                        "scene_eye_equals_look.scene", 6, {"look-at point equals the camera"}));
-}
-
-TEST(SceneErrors, UpParallelToView) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_up_parallel.scene")),
-                        "scene_up_parallel.scene", 8, {"up", "parallel"}));
-}
-
-TEST(SceneErrors, UpZero) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_up_zero.scene")), "scene_up_zero.scene", 8,
-                        {"up", "must not be zero"}));
-}
-
 TEST(SceneErrors, UpNearlyParallelAtAnyScale) {
     // The tolerance is relative: tiny but clearly non-parallel vectors are fine.
     const std::string base = "m.off\n0 0 0\n0 0 1e-20\n";
@@ -974,89 +895,6 @@ TEST(SceneErrors, UpNearlyParallelAtAnyScale) {
     EXPECT_TRUE(
         failsAt(facet::parseScene(base + "1e-30 0 1e10\n1\n1 1\n0\n0 0 0 1\n0 0 0 0\n", "s.scene"),
                 "s.scene", 4, {"parallel"}));
-}
-
-TEST(SceneErrors, FocalZero) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_focal_zero.scene")),
-                        "scene_focal_zero.scene", 10, {"focal length must be > 0", "got 0"}));
-}
-
-TEST(SceneErrors, FocalNegative) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_focal_negative.scene")),
-                        "scene_focal_negative.scene", 10, {"focal length must be > 0", "-256"}));
-}
-
-TEST(SceneErrors, SizeZero) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_zero.scene")),
-                        "scene_size_zero.scene", 12, {"width", "1 to 16384", "got 0"}));
-}
-
-TEST(SceneErrors, SizeTooLarge) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_too_large.scene")),
-                        "scene_size_too_large.scene", 12, {"height", "1 to 16384", "got 20000"}));
-}
-
-TEST(SceneErrors, SizeNotInteger) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_non_integer.scene")),
-                        "scene_size_non_integer.scene", 12, {"integers", "'320.5'"}));
-}
-
-TEST(SceneErrors, SizeWithOneNumber) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_size_one_number.scene")),
-                        "scene_size_one_number.scene", 12, {"needs 2 integers (w h), got 1"}));
-}
-
-TEST(SceneErrors, TooManyNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_too_many_numbers.scene")),
-                        "scene_too_many_numbers.scene", 4,
-                        {"camera position needs 3 numbers (x y z), got 4"}));
-}
-
-TEST(SceneErrors, GarbageToken) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_garbage_token.scene")),
-                        "scene_garbage_token.scene", 6,
-                        {"look-at point: expected a number, got 'zero'"}));
-}
-
-TEST(SceneErrors, TrailingGarbage) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_trailing_garbage.scene")),
-                        "scene_trailing_garbage.scene", 14, {"expected a number", "'abc'"}));
-}
-
-TEST(SceneErrors, NaN) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_nan.scene")), "scene_nan.scene", 4,
-                        {"camera position", "non-finite", "'nan'"}));
-}
-
-TEST(SceneErrors, Inf) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_inf.scene")), "scene_inf.scene", 10,
-                        {"focal length", "non-finite", "'inf'"}));
-}
-
-TEST(SceneErrors, NegativeAmbient) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_negative_ambient.scene")),
-                        "scene_negative_ambient.scene", 14, {"Ia must be >= 0", "-0.5"}));
-}
-
-TEST(SceneErrors, NegativeMaterial) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_material_negative.scene")),
-                        "scene_material_negative.scene", 18, {">= 0", "Kd = -0.6"}));
-}
-
-TEST(SceneErrors, MaterialWithThreeNumbers) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_material_3_numbers.scene")),
-                        "scene_material_3_numbers.scene", 18,
-                        {"material needs 4 numbers (Ka Kd Ks s), got 3"}));
-}
-
-TEST(SceneErrors, Truncated) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_truncated.scene")),
-                        "scene_truncated.scene", 14, {"file ends before the point light line"}));
-}
-
-TEST(SceneErrors, ExtraLine) {
-    EXPECT_TRUE(failsAt(facet::loadScene(testData("scene_extra_line.scene")),
-                        "scene_extra_line.scene", 22, {"at most 10 fields"}));
 }
 
 TEST(SceneErrors, MissingSceneFile) {
