@@ -29,6 +29,8 @@ namespace {
 using facet::Framebuffer;
 using facet::RenderSettings;
 using facet::Scene;
+using facet::test::appendGridTriangles;
+using facet::test::jitteredGrid;
 using facet::test::worldAt;
 
 // Triangles through pixel positions at depth `z` each (three corners, one colour per corner).
@@ -267,28 +269,9 @@ TEST(Msaa, SharedEdgesCoverEverySampleOnce) {
     base.camera.height = h;
     base.camera.focal = 30.0;
     facet::Mesh mesh;
-    std::uint32_t seed = 12345;
-    auto jitter = [&seed]() {
-        seed = seed * 1664525u + 1013904223u;
-        return (static_cast<double>(seed >> 8) / 16777216.0 - 0.5) * 2.3;
-    };
-    for (int j = 0; j <= rows; ++j) {
-        for (int i = 0; i <= cols; ++i) {
-            double x = -2.0 + (w + 4.0) * i / cols, y = -2.0 + (h + 4.0) * j / rows;
-            if (i > 0 && i < cols && j > 0 && j < rows) {
-                x += jitter();
-                y += jitter();
-            }
-            mesh.positions.push_back(worldAt(base.camera, x, y, 2.0 + 0.1 * i));
-        }
-    }
-    for (int j = 0; j < rows; ++j) {
-        for (int i = 0; i < cols; ++i) {
-            const auto v = static_cast<std::uint32_t>(j * (cols + 1) + i);
-            const std::uint32_t c = static_cast<std::uint32_t>(cols + 1);
-            mesh.indices.insert(mesh.indices.end(), {v, v + 1, v + c, v + 1, v + c + 1, v + c});
-        }
-    }
+    mesh.positions = jitteredGrid(base.camera, cols, rows, 2.0, 2.3, 12345u,
+                                  [](int i, int) { return 2.0 + 0.1 * i; });
+    appendGridTriangles(mesh.indices, cols, rows);
     const glm::dmat4 m = facet::clipFromWorld(base.camera);
     std::vector<glm::vec4> clip;
     for (const glm::vec3& p : mesh.positions) clip.push_back(glm::vec4(m * glm::dvec4(p, 1.0)));

@@ -201,23 +201,9 @@ Scene jitteredPlane(int copies) {
     scene.camera.height = h;
     scene.camera.focal = 150.0;
     Mesh mesh;
-    std::uint32_t seed = 2024;
-    auto jitter = [&seed]() {
-        seed = seed * 1664525u + 1013904223u;
-        return (static_cast<double>(seed >> 8) / 16777216.0 - 0.5) * 9.3;
-    };
-    std::vector<glm::vec3> grid;
-    for (int j = 0; j <= rows; ++j) {
-        for (int i = 0; i <= cols; ++i) {
-            double x = -3.0 + (w + 6.0) * i / cols, y = -3.0 + (h + 6.0) * j / rows;
-            if (i > 0 && i < cols && j > 0 && j < rows) {
-                x += jitter();
-                y += jitter();
-            }
-            grid.push_back(worldAt(scene.camera, x, y, 2.0 + 0.15 * i + 0.1 * j));
-        }
-    }
-    const auto c = static_cast<std::uint32_t>(cols + 1);
+    const std::vector<glm::vec3> grid =
+        jitteredGrid(scene.camera, cols, rows, 3.0, 9.3, 2024u,
+                     [](int i, int j) { return 2.0 + 0.15 * i + 0.1 * j; });
     for (int copy = 0; copy <= copies; ++copy) {
         const auto base = static_cast<std::uint32_t>(mesh.positions.size());
         for (std::size_t v = 0; v < grid.size(); ++v) {
@@ -226,13 +212,7 @@ Scene jitteredPlane(int copies) {
                                      static_cast<float>(v % 3) / 2.0f,
                                      static_cast<float>(copy) / static_cast<float>(copies + 1));
         }
-        for (int j = 0; j < rows; ++j) {
-            for (int i = 0; i < cols; ++i) {
-                const auto v =
-                    base + static_cast<std::uint32_t>(j) * c + static_cast<std::uint32_t>(i);
-                mesh.indices.insert(mesh.indices.end(), {v, v + 1, v + c, v + 1, v + c + 1, v + c});
-            }
-        }
+        appendGridTriangles(mesh.indices, cols, rows, base);
     }
     scene.mesh = std::make_shared<const Mesh>(std::move(mesh));
     return scene;
