@@ -29,8 +29,6 @@ namespace {
 using facet::Framebuffer;
 using facet::RenderSettings;
 using facet::Scene;
-using facet::test::appendGridTriangles;
-using facet::test::jitteredGrid;
 using facet::test::worldAt;
 
 // Triangles through pixel positions at depth `z` each (three corners, one colour per corner).
@@ -269,9 +267,9 @@ TEST(Msaa, SharedEdgesCoverEverySampleOnce) {
     base.camera.height = h;
     base.camera.focal = 30.0;
     facet::Mesh mesh;
-    mesh.positions = jitteredGrid(base.camera, cols, rows, 2.0, 2.3, 12345u,
-                                  [](int i, int) { return 2.0 + 0.1 * i; });
-    appendGridTriangles(mesh.indices, cols, rows);
+    mesh.positions = facet::test::jitteredGrid(base.camera, cols, rows, 2.0, 2.3, 12345u,
+                                               [](int i, int) { return 2.0 + 0.1 * i; });
+    facet::test::appendGridTriangles(mesh.indices, cols, rows);
     const glm::dmat4 m = facet::clipFromWorld(base.camera);
     std::vector<glm::vec4> clip;
     for (const glm::vec3& p : mesh.positions) clip.push_back(glm::vec4(m * glm::dvec4(p, 1.0)));
