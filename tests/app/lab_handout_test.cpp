@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -49,9 +50,12 @@ std::string replaceFunction(const std::string& file, const std::string& signatur
 TEST(LabHandout, BuildsOnItsOwnAndChecksOneStepAtATime) {
     REQUIRE_SHARED_DATA(courseDir() + "/example0.scene");
     const fs::path root = fs::path(FACET_SOURCE_DIR);
-    // A fixed name: the compiler cache then finds facet's objects from the previous run (the
-    // paths in the compile lines stay the same).
-    const fs::path tmp = fs::temp_directory_path() / "facet-lab-handout-test";
+    // A fixed name per clone: the compiler cache then finds facet's objects from the previous run
+    // (the paths in the compile lines stay the same), and two clones testing at once do not build
+    // in each other's folder.
+    const fs::path tmp =
+        fs::temp_directory_path() /
+        ("facet-lab-handout-test-" + std::to_string(std::hash<std::string>{}(FACET_SOURCE_DIR)));
     fs::remove_all(tmp);
     fs::create_directories(tmp);
     const fs::path dir = tmp / "handout";
