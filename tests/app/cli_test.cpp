@@ -444,8 +444,9 @@ using facet::test::haveGnuplot;
 
 // Without an OpenGL context facet bench measures the engine alone (exit 1, "opengl: unavailable");
 // a test that checked only the engine's rows then ends saying so (a failure under CI=true).
-#define REQUIRE_OPENGL_MEASURED(noGl) \
-    REQUIRE_PREREQUISITE(!(noGl), "no OpenGL context: facet bench measured the engine only")
+#define REQUIRE_OPENGL_MEASURED(csv)                        \
+    REQUIRE_PREREQUISITE(!(csv).has("opengl: unavailable"), \
+                         "no OpenGL context: facet bench measured the engine only")
 
 /// Median within min..max, positive, finite; rates consistent with the median.
 void expectSane(const CsvRow& r) {
@@ -523,15 +524,14 @@ TEST_F(Cli, BenchQuickWritesTheTableCsvAndChart) {
         EXPECT_EQ(pngSize(out("b.png")), std::make_pair(1600, 1100));
     }
     REQUIRE_GNUPLOT();
-    REQUIRE_OPENGL_MEASURED(noGl);
+    REQUIRE_OPENGL_MEASURED(csv);
 }
 
 TEST_F(Cli, BenchScalingQuickSweepsTrianglesAndPixels) {
     const Outcome r = run("bench --scaling --quick --threads 2 --csv " + out("s.csv") +
                           (haveGnuplot() ? " --chart " + out("s.png") : std::string()));
     const Csv csv = readCsv(out("s.csv"));
-    const bool noGl = csv.has("opengl: unavailable");
-    ASSERT_EQ(r.exitCode, noGl ? 1 : 0) << r.out;
+    ASSERT_EQ(r.exitCode, csv.has("opengl: unavailable") ? 1 : 0) << r.out;
     // Three triangle counts and three sizes, Gouraud only by default.
     EXPECT_EQ(csv.count("engine"), 12);
     long lastTriangles = 0;
@@ -549,7 +549,7 @@ TEST_F(Cli, BenchScalingQuickSweepsTrianglesAndPixels) {
         EXPECT_GT(pngSize(out("s.png")).first, 0);
     }
     REQUIRE_GNUPLOT();
-    REQUIRE_OPENGL_MEASURED(noGl);
+    REQUIRE_OPENGL_MEASURED(csv);
 }
 
 TEST_F(Cli, BenchFiltersAndFrameCounts) {
@@ -558,8 +558,7 @@ TEST_F(Cli, BenchFiltersAndFrameCounts) {
             "--frames 3 --warmup 0 --csv " +
             out("f.csv"));
     const Csv csv = readCsv(out("f.csv"));
-    const bool noGl = csv.has("opengl: unavailable");
-    ASSERT_EQ(r.exitCode, noGl ? 1 : 0) << r.out;
+    ASSERT_EQ(r.exitCode, csv.has("opengl: unavailable") ? 1 : 0) << r.out;
     EXPECT_EQ(csv.count("engine"), 4);
     for (const CsvRow& row : csv.rows) {
         EXPECT_EQ(row.caseName, "overdraw_quick");
@@ -568,7 +567,7 @@ TEST_F(Cli, BenchFiltersAndFrameCounts) {
             EXPECT_EQ(row.frames, 3);
         }
     }
-    REQUIRE_OPENGL_MEASURED(noGl);
+    REQUIRE_OPENGL_MEASURED(csv);
 }
 
 TEST_F(Cli, BenchChartWithoutGnuplotFailsButKeepsTheCsv) {
