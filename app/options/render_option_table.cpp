@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "facet/limits.hpp"
+#include "facet/scene_io.hpp"
 
 namespace facet::app {
 
@@ -29,10 +30,11 @@ const std::vector<RenderOptionSpec>& renderOptionTable() {
          "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's",
          {},
          &V::texture},
+        // Checked by checkRenderOptions, so the message names the value given.
         {"--up",
-         "A bare mesh: the world axis it stands on, shown up (y by default; z for scans and CAD "
-         "models made Z-up)",
-         {"x", "y", "z", "X", "Y", "Z"},
+         "A bare mesh: the world axis it stands on, shown up: x, y or z (y by default; z for "
+         "scans and CAD models made Z-up)",
+         {},
          &V::up},
         {"--mode", "Draw mode", choices(drawModeNames()), &V::mode},
         {"--shader",
@@ -104,6 +106,8 @@ Status checkRenderOptions(const RenderOptionValues& o) {
         return Error{{},
                      "--interp wants affine, perspective, subdivided or subdivided:N (N in 2.." +
                          std::to_string(kMaxSubdivision) + "), got '" + o.interp + "'"};
+    if (!o.up.empty() && !parseUpAxis(o.up))
+        return Error{{}, "--up " + o.up + ": expected x, y or z"};
     int w = 0, h = 0;
     if (!o.size.empty() && !parseSize(o.size, w, h))
         return Error{{},

@@ -61,8 +61,8 @@ RegisteredOptions addRenderOptionTable(CLI::App& cmd, RenderOptionValues& values
 /// Parses "WxH" with 1…kMaxImageSide each; `width` and `height` are left alone otherwise.
 bool parseSize(const std::string& text, int& width, int& height);
 
-/// Checks what CLI11 cannot (--size, --interp): an Error whose message names the option and
-/// what it wants otherwise.
+/// Checks what CLI11 does not (--size, --interp, --up): an Error whose message names the option
+/// and what it wants otherwise.
 Status checkRenderOptions(const RenderOptionValues& values);
 
 /// Applies the options to `settings`: after applyOpeningSettings, so a given shader, lighting

@@ -117,9 +117,9 @@ TEST(RenderOptionTable, BothFrontEndsListEveryOptionWithTheTablesChoices) {
     EXPECT_NE(entry(viewer, "--view").find("docs/debug-views.md"), std::string::npos);
 }
 
-TEST(RenderOptionTable, BadSizeAndInterpolationReadTheSameInBoth) {
+TEST(RenderOptionTable, BadSizeInterpolationAndUpReadTheSameInBoth) {
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
-             {"--size", "0x10"}, {"--size", "big"}, {"--interp", "subdivided:1"}}) {
+             {"--size", "0x10"}, {"--size", "big"}, {"--interp", "subdivided:1"}, {"--up", "w"}}) {
         int code = -1;
         testing::internal::CaptureStderr();
         cliSettings(args, code);
