@@ -1,7 +1,8 @@
 #pragma once
 // The options `facet render` and `facet render-gl` share: one list registered on both
 // sub-commands, one function that turns them into a loaded scene and RenderSettings, and one
-// timing summary, so the two commands draw the same picture from the same command line.
+// timing summary, so the two commands draw the same picture from the same command line. The
+// options the viewer takes too come from the one option table (render_option_table.hpp).
 
 #include <cstdio>
 #include <string>
