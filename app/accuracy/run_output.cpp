@@ -73,4 +73,13 @@ void ProgressLine::finish(const std::string& text) {
     std::fflush(out_);
 }
 
+void ProgressLine::clear() {
+    if (interactive_ && shown_ > 0) {
+        std::fprintf(out_, "\r%*s\r", static_cast<int>(shown_), "");
+        std::fflush(out_);
+    }
+    shown_ = 0;
+    last_.clear();
+}
+
 }  // namespace facet::app

@@ -20,7 +20,9 @@ Result<std::string> prepareOutputFolder(const std::string& named, const std::str
 
 /// Progress on a stream (stderr): on a terminal one line rewritten in place as often as it
 /// changes; in a log (a pipe or file) whole lines, each forced one and otherwise at most one
-/// every `logSeconds`, so a log shows every phase without thousands of lines.
+/// every `logSeconds`, so a log shows every phase without thousands of lines. The one progress
+/// line of the command line: `facet accuracy` and `sweeps` use it, `render` through
+/// DelayedProgress.
 class ProgressLine {
   public:
     /// Writes to `out`; a terminal is told from its file descriptor.
@@ -32,6 +34,9 @@ class ProgressLine {
 
     /// Writes `text` as a line of its own that stays (a result), replacing the current step.
     void finish(const std::string& text);
+
+    /// Blanks the current step on a terminal (nothing to do in a log): no line stays.
+    void clear();
 
     /// Whether the stream is a terminal.
     bool interactive() const { return interactive_; }

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "delayed_progress.hpp"
 #include "facet/image_io.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 #include "lab_render.hpp"
-#include "progress_line.hpp"
 #include "render_options.hpp"
 
 namespace facet::app {
@@ -24,7 +24,7 @@ int runRender(const RenderOptions& o, const std::string& rendererName) {
     Scene scene;
     RenderSettings settings;
     // Quiet for a second, then the phase on stderr: a 16384² frame takes tens of seconds.
-    std::optional<ProgressLine> progress(std::in_place, "facet render");
+    std::optional<DelayedProgress> progress(std::in_place, "facet render");
     if (const int code = prepareRender(o, "facet render", scene, settings, &*progress); code != kOk)
         return code;
     if (rendererName == "lab") {

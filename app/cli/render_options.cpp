@@ -20,18 +20,6 @@
 namespace facet::app {
 namespace {
 
-/// Parses "WxH" into positive integers within the scene limits.
-bool parseSize(const std::string& text, int& w, int& h) {
-    const auto x = text.find_first_of("xX");
-    if (x == std::string::npos) return false;
-    const char* b = text.data();
-    const char* e = b + text.size();
-    auto r1 = std::from_chars(b, b + x, w);
-    auto r2 = std::from_chars(b + x + 1, e, h);
-    return r1.ec == std::errc{} && r1.ptr == b + x && r2.ec == std::errc{} && r2.ptr == e &&
-           w >= 1 && h >= 1 && w <= kMaxImageSide && h <= kMaxImageSide;
-}
-
 /// Parses RRGGBB (an optional leading # or 0x is accepted).
 bool parseHexColor(std::string text, std::uint32_t& rgb) {
     if (text.rfind("#", 0) == 0) text.erase(0, 1);
@@ -57,11 +45,6 @@ bool parseVec3(const std::string& text, glm::dvec3& v) {
     return p == end;
 }
 
-/// The engine's names for a setting, as CLI11 wants them; one list serves parsing and --help.
-std::vector<std::string> choices(const std::vector<std::string_view>& names) {
-    return {names.begin(), names.end()};
-}
-
 }  // namespace
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interpHelp,
@@ -78,43 +61,21 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
         }
         return option;
     };
-    cmd.add_option("scene", o.scene,
-                   "The .scene file, or a bare .off/.obj mesh (framed from a three-quarter view, "
-                   "lit by a light near the camera)")
-        ->required();
+    // The options the viewer shares come from the one table; here the scene is required,
+    // --interp is worded for the command, and --normals and --view are hidden where unused.
+    const RegisteredOptions shared = addRenderOptionTable(cmd, o);
+    shared.at("scene")->required();
+    shared.at("--interp")->description(interpHelp);
     CLI::Option* output = cmd.add_option(
         "-o,--output", o.output, "Output image: a .png file, or - for the PNG on standard output");
     if (inspect)
         usedIf(output, false, "inspect writes no image: it prints the pixel's history");
     else
         output->required();
-    cmd.add_option("--mode", o.mode, "Draw mode")
-        ->check(CLI::IsMember(choices(drawModeNames())))
-        ->capture_default_str();
-    cmd.add_option("--shader", o.shader,
-                   "Shader (default: what the scene opens with: texture for a mesh with uvs and "
-                   "a texture, painter otherwise)")
-        ->check(CLI::IsMember(choices(shaderNames())));
-    cmd.add_option("--interp", o.interp, interpHelp)->capture_default_str();
-    cmd.add_option("--lighting", o.lighting,
-                   "Lighting: off, gouraud (per vertex) or phong (per pixel) (default: what the "
-                   "scene opens with: off for a mesh whose vertex colours vary, as the course's "
-                   "scenes, gouraud otherwise)")
-        ->check(CLI::IsMember(choices(lightingNames())));
-    cmd.add_option("--texture", o.texture,
-                   "Texture image (PNG, JPEG, BMP, TGA), replacing the scene's");
-    cmd.add_option("--filter", o.filter, "Texture filter (default: bilinear)")
-        ->check(CLI::IsMember(choices(filterNames())));
-    CLI::Option* combine =
-        cmd.add_flag("--combine", o.combine,
-                     "Texture shader: multiply the texel by the (lit) vertex colour (default: on "
-                     "for a textured mesh without vertex colours, off otherwise)");
-    cmd.add_flag("--no-combine", o.noCombine, "Texture shader: the texel alone")->excludes(combine);
     constexpr const char* kOverlay =
         "inspect lists the triangles' fragments; overlays drawn after them are not part of a "
         "pixel's history (see them with facet render)";
-    usedIf(cmd.add_flag("--normals", o.normals, "Draw vertex normals as red segments"), !inspect,
-           kOverlay);
+    usedIf(shared.at("--normals"), !inspect, kOverlay);
     usedIf(cmd.add_flag("--legend", o.legend,
                         "Depth shader: draw a legend bar with the near and far depth it maps"),
            !inspect, kOverlay);
@@ -123,14 +84,6 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
                           "default: bounding-box diagonal / 100)")
                ->check(CLI::PositiveNumber),
            !inspect, kOverlay);
-    cmd.add_flag("--cull", o.cull, "Drop back-facing triangles");
-    cmd.add_option("--size", o.size,
-                   "Image size WxH (a .scene: the focal length scales with the width; a bare "
-                   "mesh: framed for this size, 1280x720 by default)");
-    cmd.add_option("--up", o.up,
-                   "A bare mesh: the world axis it stands on, shown up (y by default; z for "
-                   "scans and CAD models made Z-up)")
-        ->check(CLI::IsMember({"x", "y", "z", "X", "Y", "Z"}));
     cmd.add_option("--eye", o.eye, "Camera position X,Y,Z, replacing the scene's");
     cmd.add_option("--look", o.look, "Look-at point X,Y,Z, replacing the scene's");
     usedIf(cmd.add_option("--write-scene", o.writeScene,
@@ -167,15 +120,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
            !gl,
            "the OpenGL twin draws one sample per pixel (it multisamples with --msaa; facet "
            "render supersamples)");
-    usedIf(cmd.add_option("--view", o.view,
-                          "Debug view instead of the shaded image, a heat map with a legend: "
-                          "overdraw (fragments per pixel), triangle-size (pixels of the triangle "
-                          "that wrote each pixel), bin-load (triangles per 64x64 tile), "
-                          "depth-test (passed, failed, no fragment), texture-lod (mip level under "
-                          "trilinear), interp-error (affine against perspective, 8-bit steps)")
-               ->check(CLI::IsMember(choices(debugViewNames())))
-               ->capture_default_str(),
-           engine,
+    usedIf(shared.at("--view"), engine,
            gl ? "debug views are drawn by the CPU engine only (facet render --view)"
               : "inspect follows the shaded image (a debug view is facet render --view)");
     cmd.add_option("--msaa", o.msaa,
@@ -189,7 +134,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, const std::string& interp
 }
 
 int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
-                  RenderSettings& settings, ProgressLine* progress) {
+                  RenderSettings& settings, DelayedProgress* progress) {
     auto bad = [command](const std::string& message) {
         std::fprintf(stderr, "%s: %s\n", command, message.c_str());
         return kBadInput;
@@ -205,34 +150,23 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
             return bad("-o " + o.output +
                        ": only PNG is written; name the file .png, or give - for standard output");
     }
-    // CLI11 has already checked the names against the engine's lists (choices above). Shader,
-    // lighting and combine start from what the scene opens with, once it is loaded.
-    settings.mode = *parseDrawMode(o.mode);
-    const std::optional<InterpSpec> interp = parseInterpSpec(o.interp);
-    if (!interp)
-        return bad("--interp wants affine, perspective, subdivided or subdivided:N (N in 2.." +
-                   std::to_string(kMaxSubdivision) + "), got '" + o.interp + "'");
-    settings.interp = interp->interp;
-    settings.subdivision = interp->subdivision;
-    if (!o.filter.empty()) settings.filter = *parseFilter(o.filter);
-    settings.showNormals = o.normals || o.normalLength > 0.0;
+    // CLI11 has already checked the names against the option table's choices; the table's
+    // check covers --interp and --size. The rest applies once the scene is loaded, over what it
+    // opens with.
+    if (Status st = checkRenderOptions(o); !st) return bad(st.error().what());
     settings.normalLength = o.normalLength;
     settings.depthLegend = o.legend;
-    settings.cullBackFaces = o.cull;
     settings.nearPlane = o.nearPlane;
     settings.pointSize = o.pointSize;
     settings.threads = o.threads;
     settings.subPixelBits = o.subPixelBits;
     settings.supersample = o.supersample;
-    settings.view = *parseDebugView(o.view);
     settings.msaa = o.msaa;
     if (!parseHexColor(o.background, settings.background))
         return bad("--background wants a hex colour RRGGBB, got '" + o.background + "'");
 
     int w = 0, h = 0;
-    if (!o.size.empty() && !parseSize(o.size, w, h))
-        return bad("--size wants WxH with 1.." + std::to_string(kMaxImageSide) + " each, got '" +
-                   o.size + "'");
+    if (!o.size.empty()) parseSize(o.size, w, h);  // checked above
     const bool bareMesh = fileKind(o.scene) == FileKind::mesh;
     if (!o.up.empty() && !bareMesh)
         return bad("--up frames a bare .off/.obj mesh; " + o.scene +
@@ -257,13 +191,11 @@ int prepareRender(const RenderOptions& o, const char* command, Scene& scene,
             !st)
             return bad(st.error().what());
     }
-    // One rule for what a scene opens with, whichever route opened it (conventions §9): the
+    // One rule for what a scene opens with, whichever route opened it (spec §9): the
     // viewer's, so a bare mesh and the scene written from it render alike; options override it.
     applyOpeningSettings(scene, settings);
-    if (!o.shader.empty()) settings.shader = *parseShader(o.shader);
-    if (!o.lighting.empty()) settings.lighting = *parseLighting(o.lighting);
-    if (o.combine) settings.combine = true;
-    if (o.noCombine) settings.combine = false;
+    if (Status st = applyRenderOptions(o, settings); !st) return bad(st.error().what());
+    settings.showNormals = o.normals || o.normalLength > 0.0;
     if (settings.shader == ShaderKind::Texture && !scene.texture)
         return bad(o.scene +
                    ": the texture shader needs a texture: the scene names none (line 10 "

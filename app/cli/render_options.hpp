@@ -1,7 +1,8 @@
 #pragma once
 // The options `facet render` and `facet render-gl` share: one list registered on both
 // sub-commands, one function that turns them into a loaded scene and RenderSettings, and one
-// timing summary, so the two commands draw the same picture from the same command line.
+// timing summary, so the two commands draw the same picture from the same command line. The
+// options the viewer takes too come from the one option table (render_option_table.hpp).
 
 #include <cstdio>
 #include <string>
@@ -10,34 +11,23 @@
 
 #include <CLI/CLI.hpp>
 
+#include "delayed_progress.hpp"
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
-#include "progress_line.hpp"
+#include "render_option_table.hpp"
 
 namespace facet::app {
 
-/// The shared options as the user typed them.
-struct RenderOptions {
-    std::string scene;
+/// The options of the render commands as the user typed them: the ones the viewer shares
+/// (RenderOptionValues, declared once in the option table) and the command line's own.
+struct RenderOptions : RenderOptionValues {
     std::string output;
-    std::string mode = "solid";
-    std::string shader;  ///< empty: what the scene opens with (applyOpeningSettings)
-    std::string interp = "perspective";
-    std::string lighting;  ///< empty: what the scene opens with (applyOpeningSettings)
-    std::string filter;    ///< empty: bilinear
-    std::string texture;
-    std::string size;
-    std::string up;          ///< --up x|y|z: the axis a bare mesh stands on (conventions §3b)
     std::string eye;         ///< --eye X,Y,Z: the camera position, replacing the scene's
     std::string look;        ///< --look X,Y,Z: the look-at point, replacing the scene's
     std::string writeScene;  ///< --write-scene: save the scene (after --size, --texture) here
     std::string background = "5C5C5C";
-    bool cull = false;
-    bool combine = false;    ///< --combine: on whatever the scene opens with
-    bool noCombine = false;  ///< --no-combine: off whatever the scene opens with
-    bool normals = false;
     double normalLength = 0.0;
     bool legend = false;
     bool stats = false;
@@ -46,9 +36,8 @@ struct RenderOptions {
     int frames = 1;
     int threads = 0;
     int subPixelBits = kMaxSubPixelBits;
-    int supersample = 1;        ///< samples per pixel axis (supersampling), 1…4
-    int msaa = 1;               ///< samples per pixel of multisampling: 1, 2, 4 or 8
-    std::string view = "none";  ///< --view: a debug view instead of the shaded image
+    int supersample = 1;  ///< samples per pixel axis (supersampling), 1…4
+    int msaa = 1;         ///< samples per pixel of multisampling: 1, 2, 4 or 8
     /// Options this command takes no notice of: registered out of --help so that giving one is
     /// refused with why (prepareRender), instead of CLI11's bare "not expected".
     std::vector<std::pair<const CLI::Option*, std::string>> unused;
@@ -71,7 +60,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& options, const std::string& 
 /// written); kOk otherwise.
 /// `progress` (optional) shows the loading phase.
 int prepareRender(const RenderOptions& options, const char* command, Scene& scene,
-                  RenderSettings& settings, ProgressLine* progress = nullptr);
+                  RenderSettings& settings, DelayedProgress* progress = nullptr);
 
 /// Prints `median X ms (min, max) over N frames` to `out` when more than one frame was timed.
 void printFrameTimes(std::vector<double> ms, std::FILE* out = stdout);

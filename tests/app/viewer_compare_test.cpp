@@ -214,6 +214,21 @@ TEST(CompareView, RendersTheSameViewWithTwoInterpolations) {
     EXPECT_EQ(c.diff.pixelsDiffering, d.pixelsDiffering);
     EXPECT_EQ(c.diff.maxError, d.maxError);
     EXPECT_EQ(c.leftStats.trianglesIn, m.scene.mesh->triangleCount());
+    // The numbers the panel shows are over the pixels either side covers (a mode of
+    // diffImages), counted here from the two depth planes as the panel counted them before.
+    std::size_t covered = 0;
+    std::uint64_t sum = 0;
+    for (std::size_t i = 0; i < affine.color.size(); ++i) {
+        const int e = pixelError(affine.color[i], perspective.color[i]);
+        sum += static_cast<std::uint64_t>(e);
+        if (e > 0 || affine.depth[i] != kEmptyDepth || perspective.depth[i] != kEmptyDepth)
+            ++covered;
+    }
+    ASSERT_GT(covered, 0u);
+    ASSERT_LT(covered, affine.color.size());  // background around the knot: the counts differ
+    EXPECT_EQ(c.diff.pixels, covered);
+    EXPECT_DOUBLE_EQ(c.diff.meanError, static_cast<double>(sum) / static_cast<double>(covered));
+    EXPECT_GT(c.diff.meanError, d.meanError);  // d: over the whole frame
 
     ASSERT_EQ(shown.width, 640);
     for (int y = 0; y < shown.height; y += 7) {

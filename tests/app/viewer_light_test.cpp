@@ -213,7 +213,7 @@ TEST(CompareStats, ErrorsAverageOverThePixelsEitherSideCovers) {
             b.depth[b.index(5 + x, 5 + y)] = 2.0f;
         }
     b.color[b.index(9, 0)] = packRgba(0, 60, 0);
-    const ImageDiff d = diffCovered(a, b);
+    const ImageDiff d = diffImages(a, b, nullptr, 0, DiffPixels::covered);
     EXPECT_EQ(d.pixels, 9u);
     EXPECT_EQ(d.pixelsDiffering, 9u);
     EXPECT_EQ(d.maxError, 90);
@@ -222,8 +222,8 @@ TEST(CompareStats, ErrorsAverageOverThePixelsEitherSideCovers) {
     EXPECT_DOUBLE_EQ(diffImages(a, b).meanError, (4 * 90 + 4 * 30 + 60) / 100.0);
     // No depth planes: every pixel counts.
     a.depth.clear();
-    EXPECT_EQ(diffCovered(a, b).pixels, 100u);
-    EXPECT_FALSE(diffCovered(a, filledFrame(5, 5, 0)).sameSize);
+    EXPECT_EQ(diffImages(a, b, nullptr, 0, DiffPixels::covered).pixels, 100u);
+    EXPECT_FALSE(diffImages(a, filledFrame(5, 5, 0), nullptr, 0, DiffPixels::covered).sameSize);
 }
 
 TEST(CompareStats, TheColourBarMatchesTheHeatMap) {

@@ -365,7 +365,7 @@ TEST(ViewerOptions, ParsesTheTestAndBenchmarkOptions) {
     EXPECT_EQ(o.statePath, "s.txt");
     EXPECT_EQ(o.texture, "t.png");
     RenderSettings s;
-    ASSERT_TRUE(applyOptions(o, s));
+    ASSERT_TRUE(facet::app::applyRenderOptions(o, s));
     EXPECT_EQ(s.shader, ShaderKind::Texture);
     EXPECT_EQ(s.interp, Interp::Subdivided);
     EXPECT_EQ(s.subdivision, 8);

@@ -54,7 +54,7 @@ const Framebuffer& CompareView::render(const Scene& scene, const RenderSettings&
 
 ImageDiff composeSides(const Framebuffer& left, const Framebuffer& right, CompareDisplay display,
                        double divider, int heatScale, Framebuffer& shown) {
-    const ImageDiff d = diffCovered(left, right);
+    const ImageDiff d = diffImages(left, right, nullptr, 0, DiffPixels::covered);
     if (display == CompareDisplay::Difference)
         diffImages(left, right, &shown, heatTop(heatScale, d.maxError));
     else

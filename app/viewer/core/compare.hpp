@@ -39,7 +39,7 @@ struct CompareView {
     Framebuffer shown;  ///< the composed picture (split or heat map)
     RenderStats leftStats;
     RenderStats rightStats;
-    ImageDiff diff;       ///< left against right, over the pixels either covers (diffCovered)
+    ImageDiff diff;  ///< left against right, over the pixels either covers (DiffPixels::covered)
     std::string refused;  ///< why a side drew nothing (checkFrame's message), or empty
 
     /// Renders both sides with `settings`, each with the interpolation `compare` gives it.

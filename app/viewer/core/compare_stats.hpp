@@ -1,8 +1,8 @@
 #pragma once
-// The Compare view's numbers over the pixels that matter: those either side covers. Averaged
-// over the whole frame, a small object on a wide background reads as nearly equal (the brick
-// wall's mean error was 9.18 over the frame against 48.7 over the wall). And the heat map's
-// colour bar: what each colour means.
+// The Compare view's heat map and its colour bar: what each colour means. (Its numbers are
+// diffImages over the pixels either side covers, DiffPixels::covered: averaged over the whole
+// frame, a small object on a wide background reads as nearly equal; the brick wall's mean error
+// was 9.18 over the frame against 48.7 over the wall.)
 
 #include <glm/vec3.hpp>
 
@@ -10,13 +10,6 @@
 #include "facet/framebuffer.hpp"
 
 namespace facet::view {
-
-/// Compares two frames over their covered pixels: those where either depth plane holds a
-/// fragment, or whose colours differ (something was drawn there without depth: normals, a
-/// legend). `pixels` counts them, `meanError` averages over them; the maximum and the count of
-/// differing pixels are the whole frame's (no uncovered pixel differs). Frames without depth
-/// planes count every pixel. Different sizes compare nothing (sameSize false).
-ImageDiff diffCovered(const Framebuffer& a, const Framebuffer& b);
 
 /// The automatic heat scale is never below this: differences of one or two 8-bit steps (the
 /// CPU engine against the OpenGL twin) show dark, not glaring yellow.

@@ -158,7 +158,7 @@ void adoptScene(App& app, LoadedScene loaded) {
         // The command line's file: its options win over the scene's defaults, as they do when
         // it loads before the window opens (they were checked then).
         app.startupLoad = false;
-        (void)applyOptions(app.options, app.model.settings);
+        (void)facet::app::applyRenderOptions(app.options, app.model.settings);
         app.model.markSaved();  // what the command line asked for is no unsaved change
     }
     app.ui.scenePath = path;
@@ -240,7 +240,7 @@ int App::run() {
     if (startupLoad) loading.start(path, model.openOptions());
     // The same route as a texture chosen in the window (ViewerModel::loadTexture).
     if (error && !options.texture.empty()) error = model.loadTexture(options.texture);
-    if (error) error = applyOptions(options, model.settings);
+    if (error) error = facet::app::applyRenderOptions(options, model.settings);
     model.markSaved();  // the command line's choices are where the user starts
     if (!error) {       // bad input is reported the same with or without a display
         std::fprintf(stderr, "facet-view: %s\n", error.error().what().c_str());

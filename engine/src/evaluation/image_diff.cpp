@@ -22,7 +22,8 @@ int pixelError(std::uint32_t a, std::uint32_t b) {
     return worst;
 }
 
-ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* heat, int scale) {
+ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* heat, int scale,
+                     DiffPixels over) {
     ImageDiff d;
     if (a.width != b.width || a.height != b.height || a.color.size() != b.color.size()) {
         d.sameSize = false;
@@ -33,7 +34,7 @@ ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* he
         return d;
     }
     const std::size_t n = a.color.size();
-    d.pixels = n;
+    const bool everyPixel = over == DiffPixels::all || a.depth.size() != n || b.depth.size() != n;
     // First pass: the error of each pixel, kept in the heat frame's colour plane (or nowhere)
     // so the second pass can colour it once the largest error is known.
     std::uint32_t* errors = nullptr;
@@ -44,12 +45,13 @@ ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* he
     std::uint64_t sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const int e = pixelError(a.color[i], b.color[i]);
+        d.pixels += everyPixel || e > 0 || a.depth[i] != kEmptyDepth || b.depth[i] != kEmptyDepth;
         sum += static_cast<std::uint64_t>(e);
         d.pixelsDiffering += e > 0;
         d.maxError = std::max(d.maxError, e);
         if (errors) errors[i] = static_cast<std::uint32_t>(e);
     }
-    d.meanError = n ? static_cast<double>(sum) / static_cast<double>(n) : 0.0;
+    d.meanError = d.pixels ? static_cast<double>(sum) / static_cast<double>(d.pixels) : 0.0;
     if (!heat) return d;
 
     // A 256-entry table: one viridis evaluation per error value, not per pixel.

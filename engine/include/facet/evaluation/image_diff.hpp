@@ -23,12 +23,21 @@ struct ImageDiff {
 /// Error of one pixel: the largest absolute difference of its R, G and B bytes (alpha ignored).
 int pixelError(std::uint32_t a, std::uint32_t b);
 
-/// Compares the colour planes of two frames. When `heat` is given it becomes a frame of the same
+/// Which pixels a comparison counts and averages over.
+enum class DiffPixels {
+    all,     ///< every pixel of the frame
+    covered  ///< those either frame drew: a fragment in either depth plane, or a colour that
+             ///< differs (drawn without depth: normals, a legend); every pixel without depth planes
+};
+
+/// Compares the colour planes of two frames. `over` picks the pixels `pixels` counts and
+/// `meanError` averages over; the maximum and the differing pixels are the whole frame's (no
+/// uncovered pixel differs). When `heat` is given it becomes a frame of the same
 /// size showing each pixel's error: black where the pixels are equal, else viridis over
 /// error / scale (dark purple for small errors, yellow at `scale` and above); `scale` <= 0 means
 /// the largest error found, so any difference is visible. Its depth plane is left as is.
 ImageDiff diffImages(const Framebuffer& a, const Framebuffer& b, Framebuffer* heat = nullptr,
-                     int scale = 0);
+                     int scale = 0, DiffPixels over = DiffPixels::all);
 
 /// How many pixels have each error (pixelError, 0..255): for bounds on the tail of the errors,
 /// not only their largest.
