@@ -22,7 +22,7 @@
 #include <cstdio>
 
 #include "accuracy_job.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "screenshot.hpp"
 #include "viewer_app.hpp"
 

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "accuracy_job.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {

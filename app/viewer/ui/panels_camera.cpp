@@ -9,7 +9,7 @@
 
 #include "framing.hpp"
 #include "panel_widgets.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {

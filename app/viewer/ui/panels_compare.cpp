@@ -9,7 +9,7 @@
 
 #include "compare_stats.hpp"
 #include "panel_widgets.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "settings_map.hpp"
 #include "viewer_app.hpp"
 

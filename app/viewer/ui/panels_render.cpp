@@ -12,7 +12,7 @@
 #include "gl_renderer.hpp"
 #include "lab/renderer.hpp"
 #include "panel_widgets.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "scene_defaults.hpp"
 #include "settings_map.hpp"
 #include "viewer_app.hpp"

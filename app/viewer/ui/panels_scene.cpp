@@ -11,7 +11,7 @@
 
 #include "facet/texture.hpp"
 #include "file_list.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "scene_defaults.hpp"
 #include "viewer_app.hpp"
 #include "workspace_ui.hpp"

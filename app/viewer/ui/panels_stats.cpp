@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "panels.hpp"
+#include "popups.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {

@@ -17,7 +17,7 @@
 
 #include "facet/scene_io.hpp"
 #include "file_list.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "resources.hpp"
 #include "scene_defaults.hpp"
 #include "screenshot.hpp"

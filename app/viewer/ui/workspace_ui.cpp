@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "panels.hpp"
+#include "popups.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {

@@ -1,4 +1,4 @@
-#include "panels.hpp"
+#include "popups.hpp"
 
 #include <imgui.h>
 
