@@ -1,35 +1,33 @@
 #pragma once
-// The ImGui panels. Each edits the App's model (scene fields, settings, view) in place; the
-// frame rendered right after shows the change, with nothing reloaded.
+// The modal pop-ups: the error message any part of the viewer can queue (showError), and the
+// question Ctrl+Q or the window's close button asks when the scene has unsaved changes.
+
+#include <string>
 
 namespace facet::view {
 
 struct App;
 
-/// Scene: path field, a folder's .scene files, recent files; mesh facts.
-void scenePanel(App& app);
-/// Texture: the current image and a path field to load another.
-void texturePanel(App& app);
-/// Render: mode, shader, interpolation, filter, lighting, combine, normals, culling, background.
-void renderPanel(App& app);
-/// Camera: yaw, pitch, distance, focal length, target, reset, and what resizing does.
-void cameraPanel(App& app);
-/// Light (position, point or directional, Ia, Id) and material (Ka, Kd, Ks, s).
-void lightPanel(App& app);
-/// Compare: the two interpolations, split or difference, divider, error numbers.
-void comparePanel(App& app);
-/// Compare's "Against the ground truth": samples, Measure, progress, the methods' table.
-void accuracySection(App& app);
-/// Screenshot: folder, whole window too, save button.
-void screenshotPanel(App& app);
-/// Stats panel: fps, frame time split (the engine's stages from the same frame as its total),
-/// history plot, what the engine drew.
-void statsPanel(App& app);
-/// The ground-truth table in a window of its own (large: eight columns), when open.
-void accuracyWindow(App& app);
-/// Labels over the Compare view naming each side.
-void compareOverlay(App& app);
+/// The pop-ups between frames: what the error says, and where the quit question is.
+struct PopupState {
+    std::string title;  ///< the error popup's; it opens on the next frame when `pending`
+    std::string message;
+    bool pending = false;
+    bool quitAsked = false;    ///< the quit question is open: the next Ctrl+Q or close quits
+    bool quitPending = false;  ///< the quit question opens in the next frame
+};
+
+/// Queues the error popup.
+void showError(PopupState& popups, const std::string& title, const std::string& message);
+
 /// The modal error popup, when one is pending or open.
-void errorPopup(App& app);
+void errorPopup(PopupState& popups);
+
+/// Ctrl+Q or the window's close button: quits, or first asks once when the scene has unsaved
+/// changes (ViewerModel::unsaved).
+void askToQuit(App& app);
+
+/// The question askToQuit opens: save and quit, quit without saving, or cancel (Esc).
+void quitPopup(App& app);
 
 }  // namespace facet::view
