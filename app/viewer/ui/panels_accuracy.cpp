@@ -66,6 +66,11 @@ void accuracySection(AccuracyState& accuracy, const ViewerModel& model) {
     // Sub-samples per pixel, n×n: the reference path's time and memory grow with n².
     char current[32];
     std::snprintf(current, sizeof current, "%d x %d per pixel", accuracy.samples, accuracy.samples);
+    // A narrow side bar leaves out "per pixel" rather than cut it off.
+    if (ImGui::CalcTextSize(current).x + ImGui::GetFrameHeight() +
+            2.0f * ImGui::GetStyle().FramePadding.x >
+        ImGui::CalcItemWidth())
+        std::snprintf(current, sizeof current, "%d x %d", accuracy.samples, accuracy.samples);
     if (ImGui::BeginCombo("samples", current)) {
         for (int n = 1; n <= kMaxAccuracySamples; ++n) {
             char item[32];

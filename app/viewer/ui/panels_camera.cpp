@@ -32,20 +32,20 @@ void cameraPanel(ViewerModel& m, bool& vsync) {
         if (ImGui::RadioButton(names[static_cast<int>(a)], axis == a)) m.setUpAxis(a);
     }
     if (!axis) {
-        ImGui::SameLine();
+        sameLineIfFits(ImGui::CalcTextSize("(the scene's own)").x);
         ImGui::TextDisabled("(the scene's own)");
     }
     if (ImGui::Button("Frame the model (F)")) frameModel(m);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Scene's camera (Home, R)"));
     if (ImGui::Button("Scene's camera (Home, R)")) m.resetCamera();
 
     const Camera& frame = m.scene.camera;
     int policy = m.sizePolicy == SizePolicy::FollowWindow ? 0 : 1;
     ImGui::RadioButton("follow the window", &policy, 0);
-    ImGui::SameLine();
     char label[64];
     std::snprintf(label, sizeof label, "scene size %dx%d", m.sceneCamera.width,
                   m.sceneCamera.height);
+    sameLineIfFits(checkWidth(label));
     ImGui::RadioButton(label, &policy, 1);
     m.sizePolicy = policy == 0 ? SizePolicy::FollowWindow : SizePolicy::SceneSize;
     ImGui::TextDisabled("frame %dx%d, focal %.1f px", frame.width, frame.height, frame.focal);

@@ -114,7 +114,8 @@ void comparePanel(CompareState& compare, ViewerModel& model, AccuracyState& accu
         sliderDouble("divider", c.divider, 0.0, 1.0, "%.2f");
     else
         ImGui::SliderInt("heat scale", &c.heatScale, 0, 255, c.heatScale ? "%d" : "auto (max)");
-    // Always three lines, so the rows below stay where they are when Compare goes on or off.
+    // Always three lines, so the rows below stay where they are when Compare goes on or off
+    // (in a narrow side bar each wraps, and they move).
     if (!c.enabled && !sideBySide) {
         ImGui::TextDisabled("off: tick it, or press C (G for CPU | OpenGL)");
         ImGui::TextDisabled("then drag the divider on the image, or D for");

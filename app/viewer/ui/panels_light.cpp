@@ -14,7 +14,7 @@ void lightPanel(ViewerModel& model) {
     dragDouble3("x y z", &light.position.x, 0.05);
     int kind = light.position.w == 0.0 ? 1 : 0;
     if (ImGui::RadioButton("point", &kind, 0) && light.position.w == 0.0) light.position.w = 1.0;
-    ImGui::SameLine();
+    sameLineIfFits(checkWidth("directional (w = 0)"));
     if (ImGui::RadioButton("directional (w = 0)", &kind, 1)) light.position.w = 0.0;
     // One line whatever the kind, so the rows below do not move.
     if (light.position.w == 0.0)

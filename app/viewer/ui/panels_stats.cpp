@@ -34,6 +34,9 @@ void statsPanel(App& app) {
     ImGui::Text("%.1f fps, %.2f ms a frame (median of 60)", m.total > 0 ? 1000.0 / m.total : 0.0,
                 m.total);
     const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.settings.enabled);
+    // A fixed-fit table sizes its columns to their text: wrapping (the side bar's) would let
+    // them shrink to a word, so its text does not wrap.
+    ImGui::PushTextWrapPos(-1.0f);
     if (ImGui::BeginTable("split", 2, ImGuiTableFlags_SizingFixedFit)) {
         auto row = [](const char* stage, double ms) {
             ImGui::TableNextRow();
@@ -73,6 +76,7 @@ void statsPanel(App& app) {
         if (plan.engine) row("waiting for engine", m.wait);
         ImGui::EndTable();
     }
+    ImGui::PopTextWrapPos();
     ImGui::TextDisabled("a renderer's stages: its frame of median time");
     // Pipelined, the engine's time overlaps the drawing: the frame costs about the larger part.
     ImGui::Checkbox("engine on its own thread", &app.loop.pipelined);

@@ -13,6 +13,7 @@
 #include "inspector.hpp"
 #include "key_actions.hpp"
 #include "light_input.hpp"
+#include "panel_widgets.hpp"
 #include "panels_accuracy.hpp"
 #include "panels_camera.hpp"
 #include "panels_compare.hpp"
@@ -48,19 +49,28 @@ void sidebarHeader(App& app) {
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("facet");
     ImGui::SameLine();
-    ImGui::TextDisabled("%s",
-                        std::filesystem::path(app.model.scene.path).filename().string().c_str());
+    // The file name, cut at the front ("...name") where it would run under the buttons.
     const ImGuiStyle& style = ImGui::GetStyle();
-    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 2.0f * button - style.ItemSpacing.x);
+    const float buttons =
+        ImGui::GetWindowContentRegionMax().x - 2.0f * button - style.ItemSpacing.x;
+    const float room = buttons - style.ItemSpacing.x - ImGui::GetCursorPosX();
+    std::string name = std::filesystem::path(app.model.scene.path).filename().string();
+    if (ImGui::CalcTextSize(name.c_str()).x > room) {
+        while (!name.empty() && ImGui::CalcTextSize(("..." + name).c_str()).x > room)
+            name.erase(0, 1);
+        name = "..." + name;
+    }
+    ImGui::TextDisabled("%s", name.c_str());
+    ImGui::SameLine(buttons);
     if (ImGui::Button("?", ImVec2(button, button))) w.help = !w.help;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys and mouse (F1 or ?)");
     ImGui::SameLine();
     if (ImGui::Button("<<", ImVec2(button, button))) w.collapsed = w.collapseChosen = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Collapse the side bar (Tab hides it)");
     ImGui::Checkbox("stats (S)", &w.statsOverlay);
-    ImGui::SameLine();
+    sameLineIfFits(checkWidth("light (M)"));
     ImGui::Checkbox("light (M)", &app.light.shown);
-    ImGui::SameLine();
+    sameLineIfFits(checkWidth("fullscreen"));
     bool full = w.fullscreen;
     if (ImGui::Checkbox("fullscreen", &full)) toggleFullscreen(app);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("F11");
@@ -115,6 +125,9 @@ void sidebar(App& app) {
         }
         sidebarHeader(app);
         ImGui::PushItemWidth(-130.0f * scale);  // room for the labels on the right
+        // Text wraps at the side bar's edge: a narrow bar (an 800-pixel window) shows every
+        // word of a note on two lines instead of cutting it off.
+        ImGui::PushTextWrapPos(0.0f);
         if (ImGui::CollapsingHeader("Scene")) scenePanel(app);
         // Open at start: Render and Camera; Compare alone when the viewer starts comparing two
         // interpolations; Render and Compare (the renderer, then the numbers) side by side.
@@ -132,6 +145,7 @@ void sidebar(App& app) {
             comparePanel(app.compare, app.model, app.accuracy);
         if (ImGui::CollapsingHeader("Screenshot")) screenshotPanel(app.screenshot);
         if (ImGui::CollapsingHeader("Stats")) statsPanel(app);
+        ImGui::PopTextWrapPos();
         ImGui::PopItemWidth();
         ImGui::TextDisabled("F1 or ?: every key and mouse action");
     }
