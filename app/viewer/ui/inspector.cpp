@@ -3,6 +3,8 @@
 // summary row per triangle that reached the pixel (green: written, red: failed the depth test,
 // grey: excluded by coverage), and under each a fold with every stage's values.
 
+#include "inspector.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include <sstream>
 
 #include "facet/evaluation/ground_truth.hpp"
-#include "inspector.hpp"
 #include "viewer_app.hpp"
 #include "workspace_ui.hpp"
 

@@ -139,16 +139,8 @@ bool writeShownScene(App& app) {
 }
 
 void saveDialog(App& app) {
-    const char* id = "Save scene##save";
-    bool focus = false;
-    if (app.files.saveDialogPending) {
-        ImGui::OpenPopup(id);
-        app.files.saveDialogPending = false;
-        focus = true;
-    }
-    const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const bool focus = app.files.saveDialogPending;  // opened in this frame: the path field
+    if (!beginCentredModal("Save scene##save", app.files.saveDialogPending)) return;
     noteWindow(app.work, "save_dialog");
     const Camera user = app.model.userCamera();
     const Camera& frame = app.model.scene.camera;

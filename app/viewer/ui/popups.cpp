@@ -12,15 +12,18 @@ void showError(PopupState& popups, const std::string& title, const std::string& 
     popups.pending = true;
 }
 
-void errorPopup(PopupState& popups) {
-    const char* id = "Error##facet";
-    if (popups.pending) {
+bool beginCentredModal(const char* id, bool& pending) {
+    if (pending) {
         ImGui::OpenPopup(id);
-        popups.pending = false;
+        pending = false;
     }
     const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    return ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+}
+
+void errorPopup(PopupState& popups) {
+    if (beginCentredModal("Error##facet", popups.pending)) {
         ImGui::TextUnformatted(popups.title.c_str());
         ImGui::Separator();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 45.0f);
@@ -46,14 +49,7 @@ void askToQuit(App& app) {
 
 void quitPopup(App& app) {
     PopupState& p = app.popups;
-    const char* id = "Quit facet-view?##quit";
-    if (p.quitPending) {
-        ImGui::OpenPopup(id);
-        p.quitPending = false;
-    }
-    const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginCentredModal("Quit facet-view?##quit", p.quitPending)) {
         noteWindow(app.work, "quit_question");
         ImGui::TextUnformatted(
             "The scene has unsaved changes (camera, light, material or settings).");

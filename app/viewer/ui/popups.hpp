@@ -17,6 +17,10 @@ struct PopupState {
     bool quitPending = false;  ///< the quit question opens in the next frame
 };
 
+/// Opens the modal pop-up `id` when `pending` (and clears it), centred on the window, and
+/// begins it: true while it shows, then end it with ImGui::EndPopup().
+bool beginCentredModal(const char* id, bool& pending);
+
 /// Queues the error popup.
 void showError(PopupState& popups, const std::string& title, const std::string& message);
 
