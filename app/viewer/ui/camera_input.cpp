@@ -1,14 +1,12 @@
-// Mouse and keyboard for the view: orbit with the left button, pan with the right or middle,
-// zoom with the wheel, the divider (Compare, or CPU | OpenGL) by dragging it, the light by its
-// marker (light_input.cpp); the keys' actions first (key_actions.cpp). Input is read from ImGui
-// after NewFrame(), when WantCaptureMouse describes this very frame: a press over a panel belongs
-// to the panel and never starts a camera drag, even if the pointer jumped there since last frame.
+#include "camera_input.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "inspector.hpp"
+#include "key_actions.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {
@@ -19,10 +17,10 @@ constexpr double kDividerGrab = 6.0;
 
 /// True when a window point is within reach of the divider (Compare, or CPU | OpenGL).
 bool overDivider(const App& app, ImVec2 mouse) {
-    const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
-    if (!plan.twoSides() || app.compare.display != CompareDisplay::Split) return false;
+    const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.settings.enabled);
+    if (!plan.twoSides() || app.compare.settings.display != CompareDisplay::Split) return false;
     if (app.view.w <= 0) return false;
-    const double x = app.view.x + app.compare.divider * app.view.w;
+    const double x = app.view.x + app.compare.settings.divider * app.view.w;
     const double y = mouse.y;
     return std::abs(mouse.x - x) <= kDividerGrab && y >= app.view.y && y < app.view.y + app.view.h;
 }
@@ -30,18 +28,21 @@ bool overDivider(const App& app, ImVec2 mouse) {
 }  // namespace
 
 void handleInput(App& app) {
+    // Input is read from ImGui after NewFrame(), when WantCaptureMouse describes this very
+    // frame: a press over a panel belongs to the panel and never starts a camera drag, even if
+    // the pointer jumped there since last frame.
     ImGuiIO& io = ImGui::GetIO();
     applyActions(app);
 
     // Shift + click inspects a pixel (inspector.hpp) and starts no drag.
     const bool inspected =
-        app.drag.button < 0 && app.work.lightDrag == LightDrag::None && inspectorClick(app);
+        app.drag.button < 0 && app.light.drag == LightDrag::None && inspectorClick(app);
     // The light's marker (or Ctrl + drag) takes a left press before the camera does.
-    if (!inspected && app.drag.button < 0 && app.work.lightDrag == LightDrag::None &&
+    if (!inspected && app.drag.button < 0 && app.light.drag == LightDrag::None &&
         !io.WantCaptureMouse && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
         startLightDrag(app);
     dragLightStep(app);
-    if (!inspected && app.drag.button < 0 && app.work.lightDrag == LightDrag::None &&
+    if (!inspected && app.drag.button < 0 && app.light.drag == LightDrag::None &&
         !io.WantCaptureMouse) {
         for (int b = 0; b < 3; ++b) {
             if (!ImGui::IsMouseClicked(b)) continue;
@@ -66,7 +67,8 @@ void handleInput(App& app) {
         const bool moved = (dx != 0.0 || dy != 0.0) && std::isfinite(dx) && std::isfinite(dy);
         if (moved && app.drag.divider) {
             if (app.view.w > 0)
-                app.compare.divider = std::clamp(app.compare.divider + dx / app.view.w, 0.0, 1.0);
+                app.compare.settings.divider =
+                    std::clamp(app.compare.settings.divider + dx / app.view.w, 0.0, 1.0);
         } else if (moved && app.drag.button == ImGuiMouseButton_Left) {
             app.model.rotate(dx, dy);
         } else if (moved) {

@@ -12,6 +12,8 @@
 // App::run() polls events ten times a second: the job's timings share the cores with as little
 // of the viewer's own work as possible.
 
+#include "frame_loop.hpp"
+
 #include <epoxy/gl.h>
 
 #include <GLFW/glfw3.h>
@@ -21,97 +23,102 @@
 
 #include <cstdio>
 
-#include "accuracy_job.hpp"
-#include "panels.hpp"
+#include "camera_input.hpp"
+#include "panels_accuracy.hpp"
+#include "panels_screenshot.hpp"
 #include "screenshot.hpp"
 #include "viewer_app.hpp"
+#include "workspace_ui.hpp"
 
 namespace facet::view {
 
-int App::frame(Clock::time_point start, bool last) {
+int runFrame(App& app, Clock::time_point start, bool last) {
     int status = 0;
-    lastTimes = {};
+    app.stats.lastTimes = {};
     const auto tEvents = Clock::now();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     // The frame's size and place first: input maps mouse pixels through them.
-    placeFrame(*this);
-    handleInput(*this);
-    drawPanels(*this);
-    if (ui.vsync != vsyncApplied) {
-        vsyncApplied = ui.vsync;
-        glfwSwapInterval(vsyncApplied ? 1 : 0);
+    placeFrame(app);
+    handleInput(app);
+    drawPanels(app);
+    if (app.loop.vsync != app.loop.vsyncApplied) {
+        app.loop.vsyncApplied = app.loop.vsync;
+        glfwSwapInterval(app.loop.vsyncApplied ? 1 : 0);
     }
-    placeFrame(*this);  // after the panels' edits (and the side bar's new width)
-    if (model.rendererChoice != lastChoice) {
-        ++rendererLog.switches;
-        lastChoice = model.rendererChoice;
+    placeFrame(app);  // after the panels' edits (and the side bar's new width)
+    if (app.model.rendererChoice != app.loop.lastChoice) {
+        ++app.loop.rendererLog.switches;
+        app.loop.lastChoice = app.model.rendererChoice;
     }
-    FramePlan plan = planFrame(model.rendererChoice, compare.enabled);
-    const AccuracyView engineView = accuracyView(model.scene, model.sceneVersion, model.settings);
+    FramePlan plan = planFrame(app.model.rendererChoice, app.compare.settings.enabled);
+    const AccuracyView engineView =
+        accuracyView(app.model.scene, app.model.sceneVersion, app.model.settings);
     // The frame in hand is this one: leave the cores to the job (or to the file being read).
-    const bool skipEngine = (accuracy.running() || loading.running()) && plan.engine &&
-                            !plan.twin && engineFresh && engineView == lastEngineView &&
-                            compare == lastEngineCompare;
+    const bool skipEngine = (app.accuracy.job.running() || app.files.loading.running()) &&
+                            plan.engine && !plan.twin && app.loop.engineFresh &&
+                            engineView == app.loop.lastEngineView &&
+                            app.compare.settings == app.loop.lastEngineCompare;
     if (skipEngine) plan.engine = false;
     const auto tPanels = Clock::now();
 
     bool inFlight = false;
     double waited = 0.0;
     auto submit = [&] {
-        worker->submit(model.scene, model.settings, compare);
+        app.loop.worker->submit(app.model.scene, app.model.settings, app.compare.settings);
         inFlight = true;
-        lastEngineView = engineView;
-        lastEngineCompare = compare;
+        app.loop.lastEngineView = engineView;
+        app.loop.lastEngineCompare = app.compare.settings;
     };
     auto collect = [&] {
         if (!inFlight) return;
         inFlight = false;
         const auto w0 = Clock::now();
-        const RenderResult& r = worker->wait(display);
+        const RenderResult& r = app.loop.worker->wait(app.loop.display);
         waited += ms(w0, Clock::now());
-        model.stats = r.stats;
-        model.refused = r.refused;
-        sides.leftStats = r.stats;
-        sides.rightStats = r.rightStats;
-        if (r.compared) sides.diff = r.diff;
-        recordEngineTimes(r, lastTimes);
-        ++rendererLog.engineFrames;
+        app.model.stats = r.stats;
+        app.model.refused = r.refused;
+        app.compare.sides.leftStats = r.stats;
+        app.compare.sides.rightStats = r.rightStats;
+        if (r.compared) app.compare.sides.diff = r.diff;
+        recordEngineTimes(r, app.stats.lastTimes);
+        ++app.loop.rendererLog.engineFrames;
     };
     if (plan.engine) submit();
     // Wait for this frame's engine picture before drawing when serial, when the one in hand is
     // stale (none yet, or the engine sat out the last frame), or side by side.
-    const bool early = plan.engine && (!ui.pipelined || !engineFresh || plan.sideBySide);
+    const bool early =
+        plan.engine && (!app.loop.pipelined || !app.loop.engineFresh || plan.sideBySide);
     bool twinDrew = false;
     auto drawTwin = [&] {
-        twinDrew = renderTwin(*this);
+        twinDrew = renderTwin(app);
         if (!twinDrew) return;
-        lastTimes.twin = twin.ms;
-        lastTimes.twinUpload = twin.stats.uploadMs;
-        lastTimes.twinDraw = twin.stats.drawMs;
-        lastTimes.twinReadback = twin.stats.readbackMs;
+        app.stats.lastTimes.twin = app.twin.ms;
+        app.stats.lastTimes.twinUpload = app.twin.stats.uploadMs;
+        app.stats.lastTimes.twinDraw = app.twin.stats.drawMs;
+        app.stats.lastTimes.twinReadback = app.twin.stats.readbackMs;
     };
-    if (plan.twin && ui.pipelined) drawTwin();
+    if (plan.twin && app.loop.pipelined) drawTwin();
     if (early) collect();
-    if (plan.twin && !ui.pipelined) drawTwin();
+    if (plan.twin && !app.loop.pipelined) drawTwin();
     if (plan.twin && !twinDrew && !plan.engine) {
         submit();  // the twin failed (and said why): the engine's picture of this state instead
         collect();
     }
-    engineFresh = plan.engine || (plan.twin && !twinDrew) || skipEngine;
+    app.loop.engineFresh = plan.engine || (plan.twin && !twinDrew) || skipEngine;
     const auto tCompose = Clock::now();
     if (twinDrew && plan.sideBySide) {
-        shown = &composeSideBySide(*this);
-        lastTimes.compare = ms(tCompose, Clock::now());
+        app.loop.shown = &composeSideBySide(app);
+        app.stats.lastTimes.compare = ms(tCompose, Clock::now());
     } else {
-        shown = twinDrew ? &twin.frame : &display;
+        app.loop.shown = twinDrew ? &app.twin.frame : &app.loop.display;
     }
     const auto tCollected = Clock::now();
 
-    gl->upload(*shown, view);
+    app.loop.gl->upload(*app.loop.shown, app.view);
     const auto tUpload = Clock::now();
-    gl->draw(view, work.backdrop, fbWidth, fbHeight);
+    app.loop.gl->draw(app.view, app.work.backdrop, app.fbWidth, app.fbHeight);
     // llvmpipe draws on the CPU when the commands are flushed: finishing each stage charges
     // its real cost to it instead of to the swap (the swap would wait for it anyway).
     glFinish();
@@ -120,30 +127,30 @@ int App::frame(Clock::time_point start, bool last) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glFinish();
     const auto tUi = Clock::now();
-    if (screenshotRequested || keys.screenshot) takeScreenshot(*this);
-    screenshotRequested = keys.screenshot = false;
-    if (last && !options.windowShot.empty()) {
-        if (Status e = saveWindowShot(fbWidth, fbHeight, options.windowShot); !e) {
+    if (app.screenshot.requested) takeScreenshot(app);
+    app.screenshot.requested = false;
+    if (last && !app.options.windowShot.empty()) {
+        if (Status e = saveWindowShot(app.fbWidth, app.fbHeight, app.options.windowShot); !e) {
             std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
             status = 1;
         }
     }
     const auto tShot = Clock::now();
-    glfwSwapBuffers(window);
-    ++frameCount;
+    glfwSwapBuffers(app.window);
+    ++app.loop.frameCount;
     const auto tSwap = Clock::now();
     collect();  // pipelined: the frame rendered meanwhile becomes the next one shown
     const auto tEnd = Clock::now();
 
-    lastTimes.upload = ms(tCollected, tUpload);
-    lastTimes.draw = ms(tUpload, tDraw);
-    lastTimes.ui = ms(tEvents, tPanels) + ms(tDraw, tUi);
-    lastTimes.uiDraw = ms(tDraw, tUi);
-    lastTimes.present = ms(start, tEvents) + ms(tShot, tSwap);
-    lastTimes.wait = waited;
-    lastTimes.total = ms(start, tEnd) - ms(tUi, tShot);  // screenshots are not frame time
-    history.push(lastTimes);
-    announceAccuracy(*this);
+    app.stats.lastTimes.upload = ms(tCollected, tUpload);
+    app.stats.lastTimes.draw = ms(tUpload, tDraw);
+    app.stats.lastTimes.ui = ms(tEvents, tPanels) + ms(tDraw, tUi);
+    app.stats.lastTimes.uiDraw = ms(tDraw, tUi);
+    app.stats.lastTimes.present = ms(start, tEvents) + ms(tShot, tSwap);
+    app.stats.lastTimes.wait = waited;
+    app.stats.lastTimes.total = ms(start, tEnd) - ms(tUi, tShot);  // screenshots are not frame time
+    app.stats.history.push(app.stats.lastTimes);
+    announceAccuracy(app.accuracy);
     return status;
 }
 

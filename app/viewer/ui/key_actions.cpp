@@ -1,6 +1,4 @@
-// The keys' actions in the window: the key map (key_map.hpp) says which action a key asks for;
-// the document's actions are applied there, the window's (help, quit, side bar, fullscreen,
-// screenshot, overlays) here. The same actions sit behind buttons in the side bar.
+#include "key_actions.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -8,6 +6,7 @@
 
 #include <algorithm>
 
+#include "popups.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {
@@ -43,7 +42,7 @@ void closeInnermost(App& app) {
     OpenThings open;
     open.popup = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
     open.inspector = app.inspector.open && app.inspector.valid;
-    open.measureTable = w.accuracyTable && app.accuracy.report() != nullptr;
+    open.measureTable = app.accuracy.table && app.accuracy.job.report() != nullptr;
     open.help = w.help;
     open.fullscreen = w.fullscreen;
     switch (escTarget(open)) {
@@ -56,7 +55,7 @@ void closeInnermost(App& app) {
             app.inspector.open = false;
             break;
         case EscTarget::MeasureTable:
-            w.accuracyTable = false;
+            app.accuracy.table = false;
             break;
         case EscTarget::Help:
             w.help = false;
@@ -71,21 +70,10 @@ void closeInnermost(App& app) {
 
 }  // namespace
 
-void askToQuit(App& app) {
-    WorkspaceUi& w = app.work;
-    // Asked already (the question is open): the second Ctrl+Q or close click quits.
-    if (w.quitAsked || !app.model.unsaved()) {
-        app.keys.quit = true;
-        return;
-    }
-    w.quitAsked = true;
-    w.quitPending = true;
-}
-
 void applyActions(App& app) {
     WorkspaceUi& w = app.work;
-    for (const Action a : w.actions) {
-        if (applyDocumentAction(a, app.model, app.compare)) continue;
+    for (const Action a : app.keys.actions) {
+        if (applyDocumentAction(a, app.model, app.compare.settings)) continue;
         switch (a) {
             case Action::Help:
                 w.help = !w.help;
@@ -97,30 +85,30 @@ void applyActions(App& app) {
                 askToQuit(app);
                 break;
             case Action::TogglePanels:
-                app.ui.showPanels = !app.ui.showPanels;
+                w.showPanels = !w.showPanels;
                 break;
             case Action::Fullscreen:
                 toggleFullscreen(app);
                 break;
             case Action::Screenshot:
-                app.keys.screenshot = true;
+                app.screenshot.requested = true;
                 break;
             case Action::ToggleStats:
                 w.statsOverlay = !w.statsOverlay;
                 break;
             case Action::ToggleDifference:  // not applied: nothing is compared
-                showNotice(app,
+                showNotice(w,
                            "D shows the difference of two pictures: turn on Compare (C) or "
                            "side by side (G) first");
                 break;
             case Action::ToggleLightMarker:
-                w.lightMarker = !w.lightMarker;
+                app.light.shown = !app.light.shown;
                 break;
             default:
                 break;
         }
     }
-    w.actions.clear();
+    app.keys.actions.clear();
 }
 
 void toggleFullscreen(App& app) {
@@ -141,7 +129,7 @@ void toggleFullscreen(App& app) {
         w.fullscreen = false;
     }
     // The swap interval belongs to the context but some drivers reset it on a mode change.
-    glfwSwapInterval(app.ui.vsync ? 1 : 0);
+    glfwSwapInterval(app.loop.vsync ? 1 : 0);
 }
 
 }  // namespace facet::view

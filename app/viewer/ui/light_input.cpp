@@ -1,6 +1,4 @@
-// The light in the picture: its marker drawn over the frame (a sun for a point light, a handle
-// with an arrow to the look-at point for a directional one) and the drags that move it. The
-// maths (projection, following the pointer, turning) is light_marker.hpp's.
+#include "light_input.hpp"
 
 #include <imgui.h>
 
@@ -52,31 +50,31 @@ glm::dvec2 lightMarkerPlace(const App& app) {
 }
 
 bool lightMarkerShown(const App& app) {
-    return app.work.lightMarker && app.model.settings.lighting != Lighting::Off;
+    return app.light.shown && app.model.settings.lighting != Lighting::Off;
 }
 
 bool startLightDrag(App& app) {
     if (!lightMarkerShown(app)) return false;
     const ImGuiIO& io = ImGui::GetIO();
     if (io.KeyCtrl) {
-        app.work.lightDrag = LightDrag::Turn;
+        app.light.drag = LightDrag::Turn;
         return true;
     }
     const ImVec2 p = toWindow(app, placeOf(app, marker(app)));
     const float dx = io.MousePos.x - p.x, dy = io.MousePos.y - p.y;
     const float grab = kGrabRadius * app.work.scale;
     if (dx * dx + dy * dy > grab * grab) return false;
-    app.work.lightDrag = LightDrag::Follow;
+    app.light.drag = LightDrag::Follow;
     return true;
 }
 
 void dragLightStep(App& app) {
-    WorkspaceUi& w = app.work;
-    if (w.lightDrag == LightDrag::None) return;
+    LightMarkerState& w = app.light;
+    if (w.drag == LightDrag::None) return;
     const ImGuiIO& io = ImGui::GetIO();
     const Camera& camera = app.model.scene.camera;
     glm::dvec4& light = lightPosition(app);
-    if (w.lightDrag == LightDrag::Follow) {
+    if (w.drag == LightDrag::Follow) {
         const glm::dvec2 pixel =
             windowToFrame(app.view, camera.width, camera.height, {io.MousePos.x, io.MousePos.y});
         light = dragLight(camera, light, app.model.orbit.target, app.model.orbit.distance, pixel);
@@ -86,12 +84,12 @@ void dragLightStep(App& app) {
         light = turnLight(camera, light, app.model.orbit.target, app.model.orbit.distance,
                           io.MouseDelta.x, io.MouseDelta.y);
     }
-    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) w.lightDrag = LightDrag::None;
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) w.drag = LightDrag::None;
 }
 
 void drawLightMarker(App& app) {
-    app.work.markerNote.clear();
-    app.work.markerNoteRect = {};
+    app.light.note.clear();
+    app.light.noteRect = {};
     if (!lightMarkerShown(app)) return;
     const LightMarker m = marker(app);
     const Camera& c = app.model.scene.camera;
@@ -99,7 +97,7 @@ void drawLightMarker(App& app) {
     const ImVec2 p = toWindow(app, placeOf(app, m));
     ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the frame, under the windows
     const float s = app.work.scale;
-    const bool active = app.work.lightDrag != LightDrag::None;
+    const bool active = app.light.drag != LightDrag::None;
     const ImU32 fill = active ? IM_COL32(255, 240, 120, 255) : IM_COL32(255, 215, 60, 255);
     const ImU32 edge = IM_COL32(0, 0, 0, 220);
     if (!inFrame) {
@@ -114,8 +112,8 @@ void drawLightMarker(App& app) {
                                 ImVec2(base.x + uy * half, base.y - ux * half), fill);
         // Said in words, beside it on the image's side: a marker on the border is no light
         // sitting there.
-        app.work.markerNote = "light off screen: drag the sun in";
-        const ImVec2 size = ImGui::CalcTextSize(app.work.markerNote.c_str());
+        app.light.note = "light off screen: drag the sun in";
+        const ImVec2 size = ImGui::CalcTextSize(app.light.note.c_str());
         const float gap = 16.0f * s;
         ImVec2 at(p.x - ux * gap - 0.5f * size.x * (1.0f + ux),
                   p.y - uy * gap - 0.5f * size.y * (1.0f + uy));
@@ -129,8 +127,8 @@ void drawLightMarker(App& app) {
         draw->AddRectFilled(ImVec2(at.x - 3.0f * s, at.y - 1.0f * s),
                             ImVec2(at.x + size.x + 3.0f * s, at.y + size.y + 1.0f * s),
                             IM_COL32(0, 0, 0, 170), 3.0f * s);
-        draw->AddText(at, fill, app.work.markerNote.c_str());
-        app.work.markerNoteRect = {
+        draw->AddText(at, fill, app.light.note.c_str());
+        app.light.noteRect = {
             static_cast<int>(at.x - 3.0f * s) - 1, static_cast<int>(at.y - 1.0f * s) - 1,
             static_cast<int>(size.x + 6.0f * s) + 3, static_cast<int>(size.y + 2.0f * s) + 3};
     } else if (m.directional && m.aimVisible) {

@@ -1,6 +1,6 @@
 #pragma once
-// Small ImGui helpers shared by the panels: combo boxes over the engine's name lists and
-// sliders over doubles.
+// Small ImGui helpers shared by the panels: combo boxes over the engine's name lists, sliders
+// over doubles, and rows that wrap in a narrow side bar.
 
 #include <imgui.h>
 
@@ -15,6 +15,25 @@
 #include "log_slider.hpp"
 
 namespace facet::view {
+
+/// The width of a checkbox or radio button labelled `label`.
+inline float checkWidth(const char* label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+           ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+/// The width of a button labelled `label`.
+inline float buttonWidth(const char* label) {
+    return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
+
+/// Puts the next item, `width` pixels wide, beside the last one when it fits before the
+/// window's right edge, else on the next line: a row of buttons in a narrow side bar (an
+/// 800-pixel window) wraps instead of being cut off.
+inline void sameLineIfFits(float width) {
+    const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+    if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
 
 /// A combo box over `names`; returns true when the selection changed.
 inline bool comboNames(const char* label, const std::vector<std::string_view>& names, int& index) {

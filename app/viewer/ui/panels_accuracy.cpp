@@ -1,16 +1,12 @@
-// The Compare panel's "Against the ground truth" section: the samples, Measure (or a progress
-// bar and Cancel while the job runs), then each method's median time and error in the view it
-// was measured for, the Pareto front marked, and a note when the view has changed since.
-// Clicking a row switches the viewer to that method.
+#include "panels_accuracy.hpp"
 
 #include <imgui.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "accuracy_job.hpp"
-#include "panels.hpp"
-#include "viewer_app.hpp"
+#include "viewer_model.hpp"
+#include "workspace_ui.hpp"
 
 namespace facet::view {
 namespace {
@@ -63,20 +59,23 @@ int methodTable(const AccuracyReport& report, const RenderSettings& current) {
 
 }  // namespace
 
-void accuracySection(App& app) {
-    app.ui.accuracyOpen =
-        ImGui::TreeNodeEx("Against the ground truth", ImGuiTreeNodeFlags_DefaultOpen);
-    if (!app.ui.accuracyOpen) return;
-    AccuracyJob& job = app.accuracy;
+void accuracySection(AccuracyState& accuracy, const ViewerModel& model) {
+    accuracy.open = ImGui::TreeNodeEx("Against the ground truth", ImGuiTreeNodeFlags_DefaultOpen);
+    if (!accuracy.open) return;
+    AccuracyJob& job = accuracy.job;
     // Sub-samples per pixel, n×n: the reference path's time and memory grow with n².
     char current[32];
-    std::snprintf(current, sizeof current, "%d x %d per pixel", app.ui.accuracySamples,
-                  app.ui.accuracySamples);
+    std::snprintf(current, sizeof current, "%d x %d per pixel", accuracy.samples, accuracy.samples);
+    // A narrow side bar leaves out "per pixel" rather than cut it off.
+    if (ImGui::CalcTextSize(current).x + ImGui::GetFrameHeight() +
+            2.0f * ImGui::GetStyle().FramePadding.x >
+        ImGui::CalcItemWidth())
+        std::snprintf(current, sizeof current, "%d x %d", accuracy.samples, accuracy.samples);
     if (ImGui::BeginCombo("samples", current)) {
         for (int n = 1; n <= kMaxAccuracySamples; ++n) {
             char item[32];
             std::snprintf(item, sizeof item, "%d x %d", n, n);
-            if (ImGui::Selectable(item, n == app.ui.accuracySamples)) app.ui.accuracySamples = n;
+            if (ImGui::Selectable(item, n == accuracy.samples)) accuracy.samples = n;
         }
         ImGui::EndCombo();
     }
@@ -88,8 +87,7 @@ void accuracySection(App& app) {
         if (ImGui::Button("Cancel")) job.cancel();
     } else {
         if (ImGui::Button("Measure"))
-            job.start(app.model.scene, app.model.sceneVersion, app.model.settings,
-                      app.ui.accuracySamples);
+            job.start(model.scene, model.sceneVersion, model.settings, accuracy.samples);
         ImGui::SameLine();
         ImGui::TextDisabled("time and error per method");
         if (!status.message.empty()) {
@@ -102,22 +100,22 @@ void accuracySection(App& app) {
     const std::shared_ptr<const AccuracyReport> report = job.report();
     if (report) {
         // A new report opens its table (a window of its own: eight columns).
-        if (job.reportCount() != app.work.accuracyTableSeen) {
-            app.work.accuracyTableSeen = job.reportCount();
-            app.work.accuracyTable = true;
+        if (job.reportCount() != accuracy.tableSeen) {
+            accuracy.tableSeen = job.reportCount();
+            accuracy.table = true;
         }
         ImGui::Text("%zu methods, truth %dx%d samples (%.1f s)", report->rows.size(),
                     report->samples, report->samples, report->groundTruthSeconds);
-        ImGui::Checkbox("show the table", &app.work.accuracyTable);
+        ImGui::Checkbox("show the table", &accuracy.table);
     }
     ImGui::TreePop();
 }
 
-void accuracyWindow(App& app) {
-    const std::shared_ptr<const AccuracyReport> report = app.accuracy.report();
-    if (!report || !app.work.accuracyTable) return;
-    const Rect& image = app.work.layout.image;
-    const float margin = 10.0f * app.work.scale;
+void accuracyWindow(AccuracyState& accuracy, ViewerModel& model, WorkspaceUi& work) {
+    const std::shared_ptr<const AccuracyReport> report = accuracy.job.report();
+    if (!report || !accuracy.table) return;
+    const Rect& image = work.layout.image;
+    const float margin = 10.0f * work.scale;
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image.x) + margin,
                                    static_cast<float>(image.y + image.h) - margin),
                             ImGuiCond_Appearing, ImVec2(0.0f, 1.0f));
@@ -127,20 +125,19 @@ void accuracyWindow(App& app) {
                                                static_cast<float>(image.h) - 2.0f * margin));
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
-    if (ImGui::Begin("Against the ground truth", &app.work.accuracyTable, flags)) {
-        noteWindow(app, "table");
+    if (ImGui::Begin("Against the ground truth", &accuracy.table, flags)) {
+        noteWindow(work, "table");
         ImGui::Text("%dx%d, ground truth %dx%d samples per pixel (%.1f s), median of %d frames",
                     report->width, report->height, report->samples, report->samples,
                     report->groundTruthSeconds, report->frames);
-        const AccuracyView now =
-            accuracyView(app.model.scene, app.model.sceneVersion, app.model.settings);
+        const AccuracyView now = accuracyView(model.scene, model.sceneVersion, model.settings);
         if (!reportFresh(*report, now))
             ImGui::TextColored(kYellow, "stale: the view or settings changed since");
         if (now.settings.mode != DrawMode::Solid)
             ImGui::TextDisabled("(drawn solid for this, like the ground truth)");
         const int clicked = methodTable(*report, now.settings);
         if (clicked >= 0)
-            applyMethod(report->rows[static_cast<std::size_t>(clicked)], app.model.settings);
+            applyMethod(report->rows[static_cast<std::size_t>(clicked)], model.settings);
         if (!report->leftOut.empty())
             ImGui::TextColored(kYellow, "left out, not coarser than the truth: %s",
                                report->leftOut.c_str());
@@ -151,6 +148,19 @@ void accuracyWindow(App& app) {
             "medians. Click a row: use that method.");
     }
     ImGui::End();
+}
+
+void announceAccuracy(AccuracyState& accuracy) {
+    const std::uint64_t count = accuracy.job.reportCount();
+    if (count == accuracy.announced) return;
+    accuracy.announced = count;
+    const std::shared_ptr<const AccuracyReport> r = accuracy.job.report();
+    if (!r) return;
+    std::printf(
+        "facet-view: accuracy measured, %zu methods at %dx%d, ground truth %dx%d samples "
+        "(%.1f s)\n",
+        r->rows.size(), r->width, r->height, r->samples, r->samples, r->groundTruthSeconds);
+    std::fflush(stdout);
 }
 
 }  // namespace facet::view

@@ -1,5 +1,4 @@
-// Camera, Light and Material panels: sliders bound straight to the orbit and to the Scene's
-// fields; the next frame renders with them, nothing is reloaded.
+#include "panels_camera.hpp"
 
 #include <imgui.h>
 
@@ -9,13 +8,11 @@
 
 #include "framing.hpp"
 #include "panel_widgets.hpp"
-#include "panels.hpp"
-#include "viewer_app.hpp"
+#include "viewer_model.hpp"
 
 namespace facet::view {
 
-void cameraPanel(App& app) {
-    ViewerModel& m = app.model;
+void cameraPanel(ViewerModel& m, bool& vsync) {
     Orbit& o = m.orbit;
     bool edited = false;
     // Angles that round to zero read "0.0", never "-0.0".
@@ -35,56 +32,24 @@ void cameraPanel(App& app) {
         if (ImGui::RadioButton(names[static_cast<int>(a)], axis == a)) m.setUpAxis(a);
     }
     if (!axis) {
-        ImGui::SameLine();
+        sameLineIfFits(ImGui::CalcTextSize("(the scene's own)").x);
         ImGui::TextDisabled("(the scene's own)");
     }
     if (ImGui::Button("Frame the model (F)")) frameModel(m);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Scene's camera (Home, R)"));
     if (ImGui::Button("Scene's camera (Home, R)")) m.resetCamera();
 
     const Camera& frame = m.scene.camera;
     int policy = m.sizePolicy == SizePolicy::FollowWindow ? 0 : 1;
     ImGui::RadioButton("follow the window", &policy, 0);
-    ImGui::SameLine();
     char label[64];
     std::snprintf(label, sizeof label, "scene size %dx%d", m.sceneCamera.width,
                   m.sceneCamera.height);
+    sameLineIfFits(checkWidth(label));
     ImGui::RadioButton(label, &policy, 1);
     m.sizePolicy = policy == 0 ? SizePolicy::FollowWindow : SizePolicy::SceneSize;
     ImGui::TextDisabled("frame %dx%d, focal %.1f px", frame.width, frame.height, frame.focal);
-    ImGui::Checkbox("vsync", &app.ui.vsync);
-}
-
-void lightPanel(App& app) {
-    LightingParams& lighting = app.model.scene.lighting;
-    Light& light = lighting.light;
-    ImGui::TextUnformatted("Light");
-    dragDouble3("x y z", &light.position.x, 0.05);
-    int kind = light.position.w == 0.0 ? 1 : 0;
-    if (ImGui::RadioButton("point", &kind, 0) && light.position.w == 0.0) light.position.w = 1.0;
-    ImGui::SameLine();
-    if (ImGui::RadioButton("directional (w = 0)", &kind, 1)) light.position.w = 0.0;
-    // One line whatever the kind, so the rows below do not move.
-    if (light.position.w == 0.0)
-        ImGui::TextDisabled("coming from direction x y z");
-    else if (light.position.w != 1.0)
-        ImGui::TextDisabled("w = %.3g: the light sits at xyz / w", light.position.w);
-    else
-        ImGui::TextDisabled("a point at x y z");
-    fineDouble("Ia (ambient)", lighting.ambient, 0.005);
-    fineDouble("Id (light)", light.intensity, 0.01);
-
-    Material& mat = lighting.material;
-    ImGui::Separator();
-    ImGui::TextUnformatted("Material");
-    fineDouble("Ka", mat.ka, 0.002);
-    fineDouble("Kd", mat.kd, 0.002);
-    fineDouble("Ks", mat.ks, 0.002);
-    logSliderDouble("s (shininess)", mat.s, 1.0, 1000.0);
-    if (app.model.settings.lighting == Lighting::Off)
-        ImGui::TextDisabled("lighting is off: L, or gouraud / phong in Render");
-    else
-        ImGui::TextDisabled("drag the light's marker; Ctrl + drag turns it");
+    ImGui::Checkbox("vsync", &vsync);
 }
 
 }  // namespace facet::view

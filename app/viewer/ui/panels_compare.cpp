@@ -1,6 +1,4 @@
-// Compare panel and the labels over the frame: which interpolation each side uses (or, with
-// the CPU | OpenGL renderer, which renderer), split or difference, and the error numbers of the
-// two pictures.
+#include "panels_compare.hpp"
 
 #include <imgui.h>
 
@@ -9,9 +7,9 @@
 
 #include "compare_stats.hpp"
 #include "panel_widgets.hpp"
-#include "panels.hpp"
+#include "panels_accuracy.hpp"
 #include "settings_map.hpp"
-#include "viewer_app.hpp"
+#include "viewer_model.hpp"
 
 namespace facet::view {
 namespace {
@@ -31,26 +29,25 @@ void sidePicker(const char* label, InterpSpec& spec) {
 }
 
 /// The two sides' names: interpolations, or the renderers side by side.
-void sideLabels(const App& app, std::string& left, std::string& right) {
-    if (app.model.rendererChoice == RendererChoice::Split) {
+void sideLabels(const CompareSettings& c, RendererChoice renderer, std::string& left,
+                std::string& right) {
+    if (renderer == RendererChoice::Split) {
         left = std::string(rendererLabel(RendererChoice::Cpu));
         right = std::string(rendererLabel(RendererChoice::OpenGl));
-    } else if (app.model.rendererChoice == RendererChoice::LabSplit) {
+    } else if (renderer == RendererChoice::LabSplit) {
         left = std::string(rendererLabel(RendererChoice::Lab));
         right = "facet (" + std::string(rendererLabel(RendererChoice::Cpu)) + ")";
     } else {
-        left = interpLabel(app.compare.left);
-        right = interpLabel(app.compare.right);
+        left = interpLabel(c.left);
+        right = interpLabel(c.right);
     }
 }
 
 /// The heat map's scale: a viridis bar from 0 to the brightest error with its numbers, at the
 /// top left of the frame (the stats box has the top right, the labels the bottom).
-void colourBar(App& app) {
-    const CompareSettings& c = app.compare;
-    const CompareView& sides = app.sides;
-    const Rect& v = app.view;
-    const float s = app.work.scale;
+void colourBar(const CompareState& compare, const Rect& v, float s) {
+    const CompareSettings& c = compare.settings;
+    const CompareView& sides = compare.sides;
     const int top = heatTop(c.heatScale, sides.diff.maxError);
     const char* caption = "error, 8-bit steps";
     const char* note =
@@ -96,13 +93,12 @@ void colourBar(App& app) {
 
 }  // namespace
 
-void comparePanel(App& app) {
-    CompareSettings& c = app.compare;
-    const bool sideBySide = app.model.rendererChoice == RendererChoice::Split ||
-                            app.model.rendererChoice == RendererChoice::LabSplit;
+void comparePanel(CompareState& compare, ViewerModel& model, AccuracyState& accuracy) {
+    CompareSettings& c = compare.settings;
+    const bool sideBySide = model.rendererChoice == RendererChoice::Split ||
+                            model.rendererChoice == RendererChoice::LabSplit;
     bool on = c.enabled;
-    if (ImGui::Checkbox("compare two interpolations", &on))
-        setCompare(on, app.model.rendererChoice, c);
+    if (ImGui::Checkbox("compare two interpolations", &on)) setCompare(on, model.rendererChoice, c);
     // Side by side, the two sides are the renderers (labelled on the image): the pickers stay,
     // greyed out, so the rows below do not move.
     ImGui::BeginDisabled(sideBySide);
@@ -118,13 +114,14 @@ void comparePanel(App& app) {
         sliderDouble("divider", c.divider, 0.0, 1.0, "%.2f");
     else
         ImGui::SliderInt("heat scale", &c.heatScale, 0, 255, c.heatScale ? "%d" : "auto (max)");
-    // Always three lines, so the rows below stay where they are when Compare goes on or off.
+    // Always three lines, so the rows below stay where they are when Compare goes on or off
+    // (in a narrow side bar each wraps, and they move).
     if (!c.enabled && !sideBySide) {
         ImGui::TextDisabled("off: tick it, or press C (G for CPU | OpenGL)");
         ImGui::TextDisabled("then drag the divider on the image, or D for");
         ImGui::TextDisabled("the difference heat map");
     } else {
-        const ImageDiff& d = app.sides.diff;
+        const ImageDiff& d = compare.sides.diff;
         const double share = d.pixels ? 100.0 * static_cast<double>(d.pixelsDiffering) /
                                             static_cast<double>(d.pixels)
                                       : 0.0;
@@ -132,12 +129,12 @@ void comparePanel(App& app) {
         ImGui::Text("differing: %zu of %zu pixels (%.2f%%)", d.pixelsDiffering, d.pixels, share);
         ImGui::TextDisabled("over the covered pixels (background left out)");
     }
-    accuracySection(app);
+    accuracySection(accuracy, model);
 }
 
-void compareOverlay(App& app) {
-    const CompareSettings& c = app.compare;
-    const Rect& v = app.view;
+void compareOverlay(const CompareState& compare, RendererChoice renderer, const Rect& v,
+                    float scale) {
+    const CompareSettings& c = compare.settings;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the frame, under the panels
     const ImU32 text = IM_COL32(255, 255, 255, 255);
     const ImU32 shade = IM_COL32(0, 0, 0, 160);
@@ -148,21 +145,21 @@ void compareOverlay(App& app) {
     };
     const float y =
         static_cast<float>(v.y + v.h) - 28.0f;  // near the bottom: panels sit at the top
-    const FramePlan plan = planFrame(app.model.rendererChoice, c.enabled);
+    const FramePlan plan = planFrame(renderer, c.enabled);
     if (!plan.twoSides()) {  // the twin alone says so, so no screenshot passes for the engine's
         if (plan.twin)
-            label(static_cast<float>(v.x + 8), y,
-                  std::string(rendererLabel(app.model.rendererChoice == RendererChoice::Lab
-                                                ? RendererChoice::Lab
-                                                : RendererChoice::OpenGl))
-                      .c_str());
+            label(
+                static_cast<float>(v.x + 8), y,
+                std::string(rendererLabel(renderer == RendererChoice::Lab ? RendererChoice::Lab
+                                                                          : RendererChoice::OpenGl))
+                    .c_str());
         return;
     }
     std::string left, right;
-    sideLabels(app, left, right);
+    sideLabels(c, renderer, left, right);
     if (c.display == CompareDisplay::Difference) {
         label(static_cast<float>(v.x + 8), y, "difference " + left + " vs " + right);
-        colourBar(app);
+        colourBar(compare, v, scale);
         return;
     }
     const float split = static_cast<float>(v.x + c.divider * v.w);

@@ -1,7 +1,8 @@
-// Render panel: who draws (the CPU engine, the OpenGL twin, or both side by side), then every
-// RenderSettings field the engine exposes, named by the engine's own lists (drawModeNames() and
-// so on), so a new mode shows up here without touching the viewer. Both renderers read the same
-// settings; where the twin's picture departs from the engine's, the panel says so.
+// Named by the engine's own lists (drawModeNames() and so on), so a new mode shows up here
+// without touching the viewer. Both renderers read the same settings; where the twin's picture
+// departs from the engine's, the panel says so.
+
+#include "panels_render.hpp"
 
 #include <algorithm>
 
@@ -12,10 +13,11 @@
 #include "gl_renderer.hpp"
 #include "lab/renderer.hpp"
 #include "panel_widgets.hpp"
-#include "panels.hpp"
+#include "popups.hpp"
 #include "scene_defaults.hpp"
 #include "settings_map.hpp"
-#include "viewer_app.hpp"
+#include "twin_view.hpp"
+#include "viewer_model.hpp"
 
 namespace facet::view {
 namespace {
@@ -45,25 +47,25 @@ const char* debugViewHelp(DebugView view) {
 }
 
 /// The renderer combo, and the twin's departures from the engine for these settings.
-void rendererPicker(App& app) {
+void rendererPicker(ViewerModel& model, CompareSettings& compare, const TwinView& twin) {
     static const auto names = rendererNames();
-    RendererChoice& choice = app.model.rendererChoice;
+    RendererChoice& choice = model.rendererChoice;
     if (ImGui::BeginCombo("renderer", std::string(rendererLabel(choice)).c_str())) {
         for (const std::string_view name : names) {
             const RendererChoice c = parseRenderer(name).value_or(RendererChoice::Cpu);
             if (ImGui::Selectable(std::string(rendererLabel(c)).c_str(), c == choice))
-                selectRenderer(choice, c, app.compare);
+                selectRenderer(choice, c, compare);
         }
         ImGui::EndCombo();
     }
     // Always one line (the details on hover), so the rows below stay put when the choice changes.
     const std::string differences = choice == RendererChoice::Cpu ? ""
-                                    : isLab(choice) ? lab::differences(app.model.settings)
-                                                    : GlRenderer::differences(app.model.settings);
+                                    : isLab(choice)               ? lab::differences(model.settings)
+                                                    : GlRenderer::differences(model.settings);
     if (isLab(choice)) {
         // Your pipeline: which steps are still stubs, and where it draws these settings
         // differently (both on hover).
-        const std::vector<lab::Step>& todo = app.twin.labReport.notStarted;
+        const std::vector<lab::Step>& todo = twin.labReport.notStarted;
         std::string steps;
         for (const lab::Step st : todo) steps += "\n  " + std::string(lab::stepName(st));
         if (todo.empty() && differences.empty())
@@ -101,9 +103,10 @@ void rendererPicker(App& app) {
 
 }  // namespace
 
-void renderPanel(App& app) {
-    rendererPicker(app);
-    RenderSettings& s = app.model.settings;
+void renderPanel(ViewerModel& model, CompareSettings& compare, const TwinView& twin,
+                 PopupState& popups) {
+    rendererPicker(model, compare, twin);
+    RenderSettings& s = model.settings;
     static const auto modes = drawModeNames();
     static const auto shaders = shaderNames();
     static const auto interps = interpNames();
@@ -140,7 +143,7 @@ void renderPanel(App& app) {
         s.filter = parseFilter(filters[static_cast<std::size_t>(filter)]).value_or(s.filter);
     ImGui::Checkbox("combine (texel x colour)", &s.combine);
     ImGui::EndDisabled();
-    if (const std::string note = noEffectNote(app.model.scene, s); !note.empty()) {
+    if (const std::string note = noEffectNote(model.scene, s); !note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", note.c_str());
         ImGui::PopStyleColor();
@@ -151,8 +154,7 @@ void renderPanel(App& app) {
         ImGui::BeginDisabled(!s.showNormals);
         // 0 means the engine's default, a hundredth of the bounding-box diagonal (walked over
         // the mesh only when the normals show).
-        const double diagonal =
-            s.showNormals ? computeBounds(*app.model.scene.mesh).diagonal() : 1.0;
+        const double diagonal = s.showNormals ? computeBounds(*model.scene.mesh).diagonal() : 1.0;
         sliderDouble("normal length", s.normalLength, 0.0, std::max(1e-6, 0.2 * diagonal),
                      s.normalLength > 0.0 ? "%.4f" : "auto");
         ImGui::EndDisabled();
@@ -172,9 +174,9 @@ void renderPanel(App& app) {
         int ss = std::clamp(s.supersample, 1, 4) - 1;
         if (ImGui::Combo("samples", &ss, kSamples, 4)) {
             // A frame over the memory limit is refused before the renderer allocates it.
-            const Camera& c = app.model.scene.camera;
+            const Camera& c = model.scene.camera;
             if (auto problem = frameMemoryProblem(c.width, c.height, ss + 1, s.msaa))
-                showError(app, "Supersampling", *problem);
+                showError(popups, "Supersampling", *problem);
             else
                 s.supersample = ss + 1;
         }
@@ -183,9 +185,9 @@ void renderPanel(App& app) {
         int ms = s.msaa >= 8 ? 3 : s.msaa >= 4 ? 2 : s.msaa >= 2 ? 1 : 0;
         if (ImGui::Combo("MSAA", &ms, kMsaa, 4)) {
             const int samples = ms == 0 ? 1 : 1 << ms;
-            const Camera& c = app.model.scene.camera;
+            const Camera& c = model.scene.camera;
             if (auto problem = frameMemoryProblem(c.width, c.height, s.supersample, samples))
-                showError(app, "Multisampling", *problem);
+                showError(popups, "Multisampling", *problem);
             else
                 s.msaa = samples;
         }

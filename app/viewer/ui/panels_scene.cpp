@@ -1,6 +1,4 @@
-// Scene and Texture panels: opening files (a small browser, recent files, drag and drop),
-// saving the scene shown, and the loading progress. A file that fails to load opens the error
-// popup and leaves what was loaded before on screen.
+#include "panels_scene.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -11,10 +9,10 @@
 
 #include "facet/texture.hpp"
 #include "file_list.hpp"
-#include "panels.hpp"
+#include "options.hpp"
+#include "popups.hpp"
 #include "scene_defaults.hpp"
 #include "viewer_app.hpp"
-#include "workspace_ui.hpp"
 
 namespace facet::view {
 namespace {
@@ -26,29 +24,29 @@ std::string fileName(const std::string& path) {
 void onDrop(GLFWwindow* window, int count, const char** paths) {
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
     if (!app) return;
-    for (int i = 0; i < count; ++i) app->ui.dropped.emplace_back(paths[i]);
+    for (int i = 0; i < count; ++i) app->files.dropped.emplace_back(paths[i]);
 }
 
 void listFolderInto(App& app, const std::string& folder) {
-    app.ui.folderError.clear();
-    app.ui.folder = std::filesystem::path(folder).lexically_normal().string();
-    app.ui.folderFiles = listFolder(app.ui.folder, &app.ui.folderError);
+    app.files.folderError.clear();
+    app.files.folder = std::filesystem::path(folder).lexically_normal().string();
+    app.files.folderFiles = listFolder(app.files.folder, &app.files.folderError);
 }
 
 void openDropped(App& app) {
-    if (app.ui.dropped.empty()) return;
-    const DropPlan plan = planDrop(app.ui.dropped);
-    app.ui.dropped.clear();
+    if (app.files.dropped.empty()) return;
+    const DropPlan plan = planDrop(app.files.dropped);
+    app.files.dropped.clear();
     if (!plan.folder.empty()) listFolderInto(app, plan.folder);
     if (!plan.texture.empty()) {
-        app.ui.texturePath = plan.texture;
+        app.files.texturePath = plan.texture;
         openTexture(app, plan.texture);  // with the settings that show it, as any route
     }
     if (!plan.open.empty()) openScene(app, plan.open);
     if (!plan.refused.empty()) {
         std::string message;
         for (const std::string& r : plan.refused) message += r + "\n";
-        showError(app, "Cannot open the dropped file", message);
+        showError(app.popups, "Cannot open the dropped file", message);
     }
 }
 
@@ -61,80 +59,100 @@ void loadingWindow(App& app) {
     if (ImGui::Begin("Opening##load", nullptr,
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize |
                          ImGuiWindowFlags_NoSavedSettings)) {
-        const double seconds = app.loading.seconds();
-        ImGui::TextWrapped("%s", fileName(app.loading.path()).c_str());
-        const float done = app.loading.progress();
+        const double seconds = app.files.loading.seconds();
+        ImGui::TextWrapped("%s", fileName(app.files.loading.path()).c_str());
+        const float done = app.files.loading.progress();
         char label[48];
         std::snprintf(label, sizeof label, "%.0f %%  (%.1f s)", 100.0 * done, seconds);
         ImGui::ProgressBar(done, ImVec2(-1.0f, 0.0f), label);
         ImGui::TextDisabled("the current scene stays until this one is ready");
-        if (ImGui::Button("Cancel")) app.loading.cancel();
+        if (ImGui::Button("Cancel")) app.files.loading.cancel();
         // Where Cancel is, for the window tests (--state) to click it.
         const ImVec2 at = ImGui::GetItemRectMin();
         const ImVec2 button = ImGui::GetItemRectSize();
         app.work.drawn["loading_cancel"] = {static_cast<int>(at.x), static_cast<int>(at.y),
                                             static_cast<int>(button.x), static_cast<int>(button.y)};
-        noteWindow(app, "loading");
+        noteWindow(app.work, "loading");
     }
     ImGui::End();
 }
 
 }  // namespace
 
+void openScene(App& app, const std::string& path) {
+    app.files.startupLoad = false;  // replaced: the command line's file is no longer coming
+    app.files.scenePath = path;
+    app.files.loading.start(path, app.model.openOptions());
+}
+
+void adoptScene(App& app, LoadedScene loaded) {
+    const std::string path = loaded.path;
+    app.model.adopt(std::move(loaded));
+    if (app.files.startupLoad) {
+        // The command line's file: its options win over the scene's defaults, as they do when
+        // it loads before the window opens (they were checked then).
+        app.files.startupLoad = false;
+        (void)facet::app::applyRenderOptions(app.options, app.model.settings);
+        app.model.markSaved();  // what the command line asked for is no unsaved change
+    }
+    app.files.scenePath = path;
+    app.files.texturePath = app.model.scene.texturePath;
+    app.files.saveScenePath = defaultSavePath(path);
+    app.files.saveChosen = false;  // a new scene: its first save asks where again
+    if (app.window) glfwSetWindowTitle(app.window, windowTitle(app.model.scene).c_str());
+}
+
+void openTexture(App& app, const std::string& path) {
+    if (Status error = app.model.loadTexture(path); !error)
+        showError(app.popups, "Cannot load the texture", error.error().what());
+}
+
 void installFileDrop(App& app) {
     if (app.window) glfwSetDropCallback(app.window, onDrop);
 }
 
 void saveShownScene(App& app) {
-    if (!app.ui.saveChosen) {
-        app.ui.saveDialogPending = true;  // the first save asks where (saveDialog)
+    if (!app.files.saveChosen) {
+        app.files.saveDialogPending = true;  // the first save asks where (saveDialog)
         return;
     }
     writeShownScene(app);
 }
 
 bool writeShownScene(App& app) {
-    if (app.ui.saveScenePath.empty()) return false;
+    if (app.files.saveScenePath.empty()) return false;
     std::error_code ec;
     const std::string full =
-        std::filesystem::absolute(app.ui.saveScenePath, ec).lexically_normal().string();
-    if (Status error = app.model.saveScene(full, app.ui.saveWindowSize); !error) {
-        app.ui.lastSave = error.error().what();
-        showError(app, "Cannot save the scene", error.error().what());
+        std::filesystem::absolute(app.files.saveScenePath, ec).lexically_normal().string();
+    if (Status error = app.model.saveScene(full, app.files.saveWindowSize); !error) {
+        app.files.lastSave = error.error().what();
+        showError(app.popups, "Cannot save the scene", error.error().what());
         return false;
     }
-    app.ui.saveScenePath = full;
-    app.ui.saveChosen = true;
-    app.ui.lastSave = "saved " + full;
-    showNotice(app, "Saved to " + full);
+    app.files.saveScenePath = full;
+    app.files.saveChosen = true;
+    app.files.lastSave = "saved " + full;
+    showNotice(app.work, "Saved to " + full);
     std::printf("facet-view: saved scene %s\n", full.c_str());
     std::fflush(stdout);
     return true;
 }
 
 void saveDialog(App& app) {
-    const char* id = "Save scene##save";
-    bool focus = false;
-    if (app.ui.saveDialogPending) {
-        ImGui::OpenPopup(id);
-        app.ui.saveDialogPending = false;
-        focus = true;
-    }
-    const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    noteWindow(app, "save_dialog");
+    const bool focus = app.files.saveDialogPending;  // opened in this frame: the path field
+    if (!beginCentredModal("Save scene##save", app.files.saveDialogPending)) return;
+    noteWindow(app.work, "save_dialog");
     const Camera user = app.model.userCamera();
     const Camera& frame = app.model.scene.camera;
     ImGui::TextUnformatted("The camera, light and material shown, as a .scene file:");
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 32.0f);
     if (focus) ImGui::SetKeyboardFocusHere();
-    const bool enter =
-        ImGui::InputText("##savepath", &app.ui.saveScenePath, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter = ImGui::InputText("##savepath", &app.files.saveScenePath,
+                                        ImGuiInputTextFlags_EnterReturnsTrue);
     char label[96];
     std::snprintf(label, sizeof label, "at the window's size (%dx%d), not the scene's (%dx%d)",
                   frame.width, frame.height, user.width, user.height);
-    ImGui::Checkbox(label, &app.ui.saveWindowSize);
+    ImGui::Checkbox(label, &app.files.saveWindowSize);
     if (ImGui::Button("Save") || enter) {
         if (writeShownScene(app)) ImGui::CloseCurrentPopup();
     }
@@ -146,21 +164,21 @@ void saveDialog(App& app) {
 }
 
 void sceneFileEvents(App& app) {
-    if (std::optional<Result<LoadedScene>> done = app.loading.take()) {
+    if (std::optional<Result<LoadedScene>> done = app.files.loading.take()) {
         if (*done) {
             adoptScene(app, std::move(*done).value());
         } else {
-            if (app.startupLoad)  // the command line's file: said where scripts look too
+            if (app.files.startupLoad)  // the command line's file: said where scripts look too
                 std::fprintf(stderr, "facet-view: %s\n", done->error().what().c_str());
-            app.startupLoad = false;
-            showError(app, "Cannot open the file",
+            app.files.startupLoad = false;
+            showError(app.popups, "Cannot open the file",
                       done->error().what() + "\n\nThe previous scene stays.");
         }
     }
     openDropped(app);
     if (app.keys.saveScene) saveShownScene(app);
     app.keys.saveScene = false;
-    if (app.loading.running()) loadingWindow(app);
+    if (app.files.loading.running()) loadingWindow(app);
 }
 
 void scenePanel(App& app) {
@@ -172,44 +190,44 @@ void scenePanel(App& app) {
                         scene.mesh->hasNormals() ? ", normals from the file" : "");
 
     const bool enter =
-        ImGui::InputText("##scene", &app.ui.scenePath, ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::InputText("##scene", &app.files.scenePath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    if (ImGui::Button("Open") || enter) openScene(app, app.ui.scenePath);
+    if (ImGui::Button("Open") || enter) openScene(app, app.files.scenePath);
 
     const bool save =
-        ImGui::InputText("##save", &app.ui.saveScenePath, ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::InputText("##save", &app.files.saveScenePath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if (ImGui::Button("Save scene") || save) writeShownScene(app);  // the path is in view
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Ctrl+S: write the camera, image size, light and material shown as a .scene file");
-    if (!app.ui.lastSave.empty()) ImGui::TextDisabled("%s", app.ui.lastSave.c_str());
+    if (!app.files.lastSave.empty()) ImGui::TextDisabled("%s", app.files.lastSave.c_str());
 
     // The browser: folders (and ".." up), scenes, meshes, images; a click opens or lists.
     const bool list =
-        ImGui::InputText("##folder", &app.ui.folder, ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::InputText("##folder", &app.files.folder, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    if (ImGui::Button("List folder") || list) listFolderInto(app, app.ui.folder);
-    if (!app.ui.folderError.empty())
-        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", app.ui.folderError.c_str());
+    if (ImGui::Button("List folder") || list) listFolderInto(app, app.files.folder);
+    if (!app.files.folderError.empty())
+        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", app.files.folderError.c_str());
     if (ImGui::BeginListBox("##files",
                             ImVec2(-1.0f, 7.5f * ImGui::GetTextLineHeightWithSpacing()))) {
         // Acted on after the loop: opening or listing changes the list being drawn.
         const FolderEntry* chosen = nullptr;
-        for (const FolderEntry& f : app.ui.folderFiles) {
+        for (const FolderEntry& f : app.files.folderFiles) {
             const bool dim = f.kind == EntryKind::image;
             if (dim) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.7f, 0.8f, 1.0f, 1.0f));
             if (ImGui::Selectable(f.name.c_str(), f.path == scene.path)) chosen = &f;
             if (dim) ImGui::PopStyleColor();
         }
-        if (app.ui.folderFiles.size() <= 1) ImGui::TextDisabled("no scenes, meshes or images");
+        if (app.files.folderFiles.size() <= 1) ImGui::TextDisabled("no scenes, meshes or images");
         ImGui::EndListBox();
         if (chosen) {
             const FolderEntry entry = *chosen;
             if (entry.kind == EntryKind::folder || entry.kind == EntryKind::parent)
                 listFolderInto(app, entry.path);
             else
-                app.ui.dropped.push_back(entry.path);  // opened as a drop would be
+                app.files.dropped.push_back(entry.path);  // opened as a drop would be
         }
     }
     ImGui::TextDisabled("or drop a scene, mesh, image or folder on the window");
@@ -232,9 +250,9 @@ void texturePanel(App& app) {
         ImGui::TextDisabled("no texture (the texture shader samples white)");
     if (!scene.mesh->hasUvs()) ImGui::TextDisabled("this mesh has no texture coordinates");
     const bool enter =
-        ImGui::InputText("##texture", &app.ui.texturePath, ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::InputText("##texture", &app.files.texturePath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    if (ImGui::Button("Load") || enter) openTexture(app, app.ui.texturePath);
+    if (ImGui::Button("Load") || enter) openTexture(app, app.files.texturePath);
     if (app.model.settings.shader != ShaderKind::Texture && ImGui::Button("Use the texture shader"))
         app.model.settings.shader = ShaderKind::Texture;
 }

@@ -1,13 +1,9 @@
-// Stats panel (fps, the frame time split with the CPU engine's and the OpenGL twin's times
-// side by side, its history, what each drew) and the Screenshot panel. The compact overlay in
-// the image's corner is sidebar.cpp's.
+#include "panels_stats.hpp"
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include <algorithm>
 
-#include "panels.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {
@@ -34,10 +30,13 @@ void twinCounts(const GlStats& s) {
 
 void statsPanel(App& app) {
     // Medians over the last second or so: steadier than the last frame, still current.
-    const StageTimes m = app.history.recentMedian(60);
+    const StageTimes m = app.stats.history.recentMedian(60);
     ImGui::Text("%.1f fps, %.2f ms a frame (median of 60)", m.total > 0 ? 1000.0 / m.total : 0.0,
                 m.total);
-    const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
+    const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.settings.enabled);
+    // A fixed-fit table sizes its columns to their text: wrapping (the side bar's) would let
+    // them shrink to a word, so its text does not wrap.
+    ImGui::PushTextWrapPos(-1.0f);
     if (ImGui::BeginTable("split", 2, ImGuiTableFlags_SizingFixedFit)) {
         auto row = [](const char* stage, double ms) {
             ImGui::TableNextRow();
@@ -49,7 +48,7 @@ void statsPanel(App& app) {
         if (plan.engine) {
             // One frame's total with its own stages (the frame of median engine time), so the
             // parts add up to the whole; what the stages leave is set-up and hand-over.
-            const StageTimes e = app.history.medianFrameBy(60, &StageTimes::render);
+            const StageTimes e = app.stats.history.medianFrameBy(60, &StageTimes::render);
             row("CPU engine render", e.render);
             row("  clear", e.engineClear);
             row("  vertices", e.engineVertex);
@@ -61,7 +60,7 @@ void statsPanel(App& app) {
         if (plan.twin) {
             // Like the engine's time, the twin's ends with the picture in memory: its draw is
             // timed on the CPU clock up to glFinish, then the readback.
-            const StageTimes t = app.history.medianFrameBy(60, &StageTimes::twin);
+            const StageTimes t = app.stats.history.medianFrameBy(60, &StageTimes::twin);
             row(isLab(app.model.rendererChoice) ? "your pipeline render" : "OpenGL twin render",
                 t.twin);
             row("  prepare + upload", t.twinUpload);
@@ -77,16 +76,17 @@ void statsPanel(App& app) {
         if (plan.engine) row("waiting for engine", m.wait);
         ImGui::EndTable();
     }
+    ImGui::PopTextWrapPos();
     ImGui::TextDisabled("a renderer's stages: its frame of median time");
     // Pipelined, the engine's time overlaps the drawing: the frame costs about the larger part.
-    ImGui::Checkbox("engine on its own thread", &app.ui.pipelined);
-    if (plan.twin && !app.rendererLog.device.empty())
-        ImGui::TextDisabled("OpenGL: %s", app.rendererLog.device.c_str());
-    if (plan.engine && plan.twin && app.ui.pipelined)
+    ImGui::Checkbox("engine on its own thread", &app.loop.pipelined);
+    if (plan.twin && !app.loop.rendererLog.device.empty())
+        ImGui::TextDisabled("OpenGL: %s", app.loop.rendererLog.device.c_str());
+    if (plan.engine && plan.twin && app.loop.pipelined)
         ImGui::TextDisabled(
             "engine and twin run at once (llvmpipe: on the\nsame cores); untick for separate "
             "times");
-    const std::vector<float>& plot = app.history.plot;
+    const std::vector<float>& plot = app.stats.history.plot;
     const float top = plot.empty() ? 1.0f : *std::max_element(plot.begin(), plot.end()) * 1.2f;
     char overlay[48];
     std::snprintf(overlay, sizeof overlay, "frame ms (max %.1f)", top / 1.2f);
@@ -97,20 +97,12 @@ void statsPanel(App& app) {
     const Camera& c = app.model.scene.camera;
     ImGui::Text("frame %dx%d", c.width, c.height);
     if (plan.engineCompare) {
-        drawCounts("left: ", app.sides.leftStats);
-        drawCounts("right: ", app.sides.rightStats);
+        drawCounts("left: ", app.compare.sides.leftStats);
+        drawCounts("right: ", app.compare.sides.rightStats);
     } else if (plan.engine) {
         drawCounts(plan.twin ? "CPU: " : "", app.model.stats);
     }
     if (plan.twin) twinCounts(app.twin.stats);
-}
-
-void screenshotPanel(App& app) {
-    ImGui::InputText("folder", &app.ui.screenshotFolder);
-    ImGui::TextDisabled("created when the first screenshot is saved");
-    ImGui::Checkbox("the whole window too", &app.ui.screenshotWindowToo);
-    if (ImGui::Button("Save the frame (F12 or P)")) app.screenshotRequested = true;
-    if (!app.ui.lastScreenshot.empty()) ImGui::TextWrapped("%s", app.ui.lastScreenshot.c_str());
 }
 
 }  // namespace facet::view

@@ -33,10 +33,10 @@ struct TwinView {
 /// again, and false.
 bool renderTwin(App& app);
 
-/// Side by side: the engine's picture (app.display) left, the twin's right (for the lab's
+/// Side by side: the engine's picture (app.loop.display) left, the twin's right (for the lab's
 /// choice your pipeline left and the engine right), composed into
-/// app.sides.shown with the Compare view's divider or difference; the numbers go to
-/// app.sides.diff. Returns the composed picture.
+/// app.compare.sides.shown with the Compare view's divider or difference; the numbers go to
+/// app.compare.sides.diff. Returns the composed picture.
 const Framebuffer& composeSideBySide(App& app);
 
 }  // namespace facet::view

@@ -1,6 +1,8 @@
-// Fonts and widget sizes that follow the monitor's content scale (a 4K laptop screen reports 2:
-// the 13-pixel font becomes 26 pixels, paddings and the side bar twice as wide), and opaque
-// windows and pop-ups (a combo's list over the picture was unreadable at 95 % opacity).
+// A 4K laptop screen reports a content scale of 2: the 13-pixel font becomes 26 pixels, paddings
+// and the side bar twice as wide. Windows and pop-ups are opaque: a combo's list over the
+// picture was unreadable at 95 % opacity.
+
+#include "ui_style.hpp"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -8,8 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-
-#include "viewer_app.hpp"
 
 namespace facet::view {
 
@@ -33,15 +33,15 @@ void applyUiStyle(float scale, bool rebuild) {
     ImGui::GetStyle() = style;
 }
 
-float windowUiScale(const App& app) {
-    if (app.options.uiScale > 0.0) return static_cast<float>(app.options.uiScale);
+float windowUiScale(GLFWwindow* window, double uiScaleOption) {
+    if (uiScaleOption > 0.0) return static_cast<float>(uiScaleOption);
     float sx = 1.0f, sy = 1.0f;
-    glfwGetWindowContentScale(app.window, &sx, &sy);
+    glfwGetWindowContentScale(window, &sx, &sy);
     // Where window coordinates are already scaled points (macOS), ImGui works in points: only
     // the rest of the content scale applies.
     int ww = 0, wh = 0, fw = 0, fh = 0;
-    glfwGetWindowSize(app.window, &ww, &wh);
-    glfwGetFramebufferSize(app.window, &fw, &fh);
+    glfwGetWindowSize(window, &ww, &wh);
+    glfwGetFramebufferSize(window, &fw, &fh);
     const float framebufferScale =
         ww > 0 && fw > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
     const float scale = std::max(sx, sy) / std::max(framebufferScale, 1e-3f);

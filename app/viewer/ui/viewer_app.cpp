@@ -17,12 +17,13 @@
 
 #include "facet/scene_io.hpp"
 #include "file_list.hpp"
-#include "panels.hpp"
 #include "resources.hpp"
 #include "scene_defaults.hpp"
 #include "screenshot.hpp"
 #include "screenshot_folder.hpp"
 #include "state_file.hpp"
+#include "ui_style.hpp"
+#include "workspace_state.hpp"
 
 namespace facet::view {
 namespace {
@@ -53,13 +54,13 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
         return;
     }
     if (app && key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL)) {
-        app->work.actions.push_back(Action::Quit);
+        app->keys.actions.push_back(Action::Quit);
         return;
     }
     // Esc closes the innermost thing, a modal pop-up too (which owns the keyboard), unless a
     // text field is being edited: there it leaves the field.
     if (app && key == GLFW_KEY_ESCAPE && !ImGui::GetIO().WantTextInput) {
-        app->work.actions.push_back(Action::Back);
+        app->keys.actions.push_back(Action::Back);
         return;
     }
     // A text field being edited owns the keyboard (P is a letter, Esc leaves the field).
@@ -88,13 +89,13 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
         default:
             return;
     }
-    if (const std::optional<Action> a = actionForKey(*named)) app->work.actions.push_back(*a);
+    if (const std::optional<Action> a = actionForKey(*named)) app->keys.actions.push_back(*a);
 }
 
 void onChar(GLFWwindow* window, unsigned codepoint) {
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
     if (!app || ImGui::GetIO().WantCaptureKeyboard) return;
-    if (const std::optional<Action> a = actionForChar(codepoint)) app->work.actions.push_back(*a);
+    if (const std::optional<Action> a = actionForChar(codepoint)) app->keys.actions.push_back(*a);
 }
 
 /// The window's close button asks as Ctrl+Q does (askToQuit, in the next frame).
@@ -102,16 +103,12 @@ void onClose(GLFWwindow* window) {
     App* app = static_cast<App*>(glfwGetWindowUserPointer(window));
     if (!app) return;
     glfwSetWindowShouldClose(window, GLFW_FALSE);
-    app->work.actions.push_back(Action::Quit);
+    app->keys.actions.push_back(Action::Quit);
 }
 
 void onContentScale(GLFWwindow* window, float, float) {
     if (App* app = static_cast<App*>(glfwGetWindowUserPointer(window)))
         app->work.scaleChanged = true;
-}
-
-std::string windowTitle(const Scene& scene) {
-    return "facet-view - " + std::filesystem::path(scene.path).filename().string();
 }
 
 /// The window size: --size, else room for the scene's image beside the side bar, within the
@@ -139,76 +136,8 @@ void initialWindowSize(const ViewerOptions& o, const Camera& camera, GLFWwindow*
 
 }  // namespace
 
-void showError(App& app, const std::string& title, const std::string& message) {
-    app.ui.popupTitle = title;
-    app.ui.popupMessage = message;
-    app.ui.popupPending = true;
-}
-
-void openScene(App& app, const std::string& path) {
-    app.startupLoad = false;  // replaced: the command line's file is no longer coming
-    app.ui.scenePath = path;
-    app.loading.start(path, app.model.openOptions());
-}
-
-void adoptScene(App& app, LoadedScene loaded) {
-    const std::string path = loaded.path;
-    app.model.adopt(std::move(loaded));
-    if (app.startupLoad) {
-        // The command line's file: its options win over the scene's defaults, as they do when
-        // it loads before the window opens (they were checked then).
-        app.startupLoad = false;
-        (void)facet::app::applyRenderOptions(app.options, app.model.settings);
-        app.model.markSaved();  // what the command line asked for is no unsaved change
-    }
-    app.ui.scenePath = path;
-    app.ui.texturePath = app.model.scene.texturePath;
-    app.ui.saveScenePath = defaultSavePath(path);
-    app.ui.saveChosen = false;  // a new scene: its first save asks where again
-    if (app.window) glfwSetWindowTitle(app.window, windowTitle(app.model.scene).c_str());
-}
-
-void openTexture(App& app, const std::string& path) {
-    if (Status error = app.model.loadTexture(path); !error)
-        showError(app, "Cannot load the texture", error.error().what());
-}
-
-void takeScreenshot(App& app) {
-    if (!app.shown) return;
-    if (Status error = ensureFolder(app.ui.screenshotFolder); !error) {
-        app.ui.lastScreenshot = error.error().what();
-        showNotice(app, app.ui.lastScreenshot);
-        return;
-    }
-    const std::string framePath = nextFreePath(app.ui.screenshotFolder, "facet-frame");
-    if (Status error = saveFrameShot(*app.shown, framePath); !error) {
-        app.ui.lastScreenshot = error.error().what();
-        showNotice(app, app.ui.lastScreenshot);
-        return;
-    }
-    app.ui.lastScreenshot = framePath;
-    if (app.ui.screenshotWindowToo) {
-        const std::string windowPath = nextFreePath(app.ui.screenshotFolder, "facet-window");
-        const Status error = saveWindowShot(app.fbWidth, app.fbHeight, windowPath);
-        app.ui.lastScreenshot +=
-            !error ? " (window: " + error.error().what() + ")" : ", " + windowPath;
-    }
-    showNotice(app, "Saved " + app.ui.lastScreenshot);
-    std::printf("facet-view: saved %s\n", app.ui.lastScreenshot.c_str());
-    std::fflush(stdout);
-}
-
-void announceAccuracy(App& app) {
-    const std::uint64_t count = app.accuracy.reportCount();
-    if (count == app.accuracySeen) return;
-    app.accuracySeen = count;
-    const std::shared_ptr<const AccuracyReport> r = app.accuracy.report();
-    if (!r) return;
-    std::printf(
-        "facet-view: accuracy measured, %zu methods at %dx%d, ground truth %dx%d samples "
-        "(%.1f s)\n",
-        r->rows.size(), r->width, r->height, r->samples, r->samples, r->groundTruthSeconds);
-    std::fflush(stdout);
+std::string windowTitle(const Scene& scene) {
+    return "facet-view - " + std::filesystem::path(scene.path).filename().string();
 }
 
 int App::run() {
@@ -223,21 +152,22 @@ int App::run() {
     // files load here, so bad input still ends the run with exit code 2 and one line, and so
     // does everything in a run of a fixed number of frames (--frames: a script wants that file).
     std::error_code sizeError;
-    startupLoad = error && options.frames <= 0 && path != defaultScenePath() &&
-                  options.texture.empty() && std::filesystem::is_regular_file(path, sizeError) &&
-                  std::filesystem::file_size(path, sizeError) > kStartupLoadBytes &&
-                  !defaultScenePath().empty();
+    files.startupLoad = error && options.frames <= 0 && path != defaultScenePath() &&
+                        options.texture.empty() &&
+                        std::filesystem::is_regular_file(path, sizeError) &&
+                        std::filesystem::file_size(path, sizeError) > kStartupLoadBytes &&
+                        !defaultScenePath().empty();
     if (const std::optional<UpAxis> up = parseUpAxis(options.up))
         model.up = *up;
     else if (error)
         error = Error{{}, "--up " + options.up + ": expected x, y or z"};
-    if (error) error = model.load(startupLoad ? defaultScenePath() : path);
+    if (error) error = model.load(files.startupLoad ? defaultScenePath() : path);
     // After the load: the default scene shown meanwhile is not one the user opened.
     model.recentFile = configFolder().empty() ? "" : configFolder() + "/recent.txt";
     model.recent = readRecent(model.recentFile, kMaxRecent);
     // A file named on the command line is one the user opened (the default scene is not).
-    if (error && !startupLoad && path != defaultScenePath()) model.rememberFile(path);
-    if (startupLoad) loading.start(path, model.openOptions());
+    if (error && !files.startupLoad && path != defaultScenePath()) model.rememberFile(path);
+    if (files.startupLoad) files.loading.start(path, model.openOptions());
     // The same route as a texture chosen in the window (ViewerModel::loadTexture).
     if (error && !options.texture.empty()) error = model.loadTexture(options.texture);
     if (error) error = facet::app::applyRenderOptions(options, model.settings);
@@ -246,20 +176,20 @@ int App::run() {
         std::fprintf(stderr, "facet-view: %s\n", error.error().what().c_str());
         return 2;
     }
-    ui.scenePath = path;
-    ui.folder = std::filesystem::path(path).parent_path().string();
-    ui.folderFiles = listFolder(ui.folder, &ui.folderError);
-    ui.saveScenePath = defaultSavePath(path);
-    ui.texturePath = model.scene.texturePath;
-    ui.screenshotFolder = screenshotFolder(picturesEnvFromProcess());
-    ui.vsync = !options.noVsync;
+    files.scenePath = path;
+    files.folder = std::filesystem::path(path).parent_path().string();
+    files.folderFiles = listFolder(files.folder, &files.folderError);
+    files.saveScenePath = defaultSavePath(path);
+    files.texturePath = model.scene.texturePath;
+    screenshot.folder = screenshotFolder(picturesEnvFromProcess());
+    loop.vsync = !options.noVsync;
     model.sizePolicy = options.keepSceneSize ? SizePolicy::SceneSize : SizePolicy::FollowWindow;
-    compare.enabled = options.compare;
+    compare.settings.enabled = options.compare;
     model.rendererChoice = parseRenderer(options.renderer).value_or(RendererChoice::Cpu);
-    lastChoice = model.rendererChoice;
-    ui.pipelined = !options.serial;
-    if (options.difference) compare.display = CompareDisplay::Difference;
-    ui.showPanels = !options.hidePanels;
+    loop.lastChoice = model.rendererChoice;
+    loop.pipelined = !options.serial;
+    if (options.difference) compare.settings.display = CompareDisplay::Difference;
+    work.showPanels = !options.hidePanels;
 
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit()) {
@@ -286,17 +216,17 @@ int App::run() {
         glfwTerminate();
         return 2;
     }
-    work.scale = windowUiScale(*this);
+    work.scale = windowUiScale(window, options.uiScale);
     work.sidebarWidth = static_cast<int>(kSidebarWidth * work.scale + 0.5f);
     // A window sized for the scene beside the full side bar keeps that layout until resized.
     if (options.width <= 0 || options.height <= 0) work.keepWidthAt = -1;
     int width = 0, height = 0;
-    initialWindowSize(options, model.sceneCamera, window, ui.showPanels ? work.sidebarWidth : 0,
+    initialWindowSize(options, model.sceneCamera, window, work.showPanels ? work.sidebarWidth : 0,
                       width, height);
     glfwSetWindowSize(window, width, height);
     glfwShowWindow(window);
     glfwMakeContextCurrent(window);
-    glfwSwapInterval(ui.vsync ? 1 : 0);
+    glfwSwapInterval(loop.vsync ? 1 : 0);
     glfwSetWindowUserPointer(window, this);
     // Before ImGui's, which chain to them.
     glfwSetKeyCallback(window, onKey);
@@ -308,37 +238,37 @@ int App::run() {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     // The panels' layout is kept with the recent files, never in the working folder.
-    ui.iniPath = configFolder().empty() ? "" : configFolder() + "/imgui.ini";
-    if (!ui.iniPath.empty()) {
+    iniPath = configFolder().empty() ? "" : configFolder() + "/imgui.ini";
+    if (!iniPath.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(configFolder(), ec);
     }
-    ImGui::GetIO().IniFilename = ui.iniPath.empty() ? nullptr : ui.iniPath.c_str();
+    ImGui::GetIO().IniFilename = iniPath.empty() ? nullptr : iniPath.c_str();
     applyUiStyle(work.scale, false);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
-    gl = std::make_unique<GlFrame>();
-    if (Status e = gl->init(); !e) {  // names the shader file, with the GLSL log
+    loop.gl = std::make_unique<GlFrame>();
+    if (Status e = loop.gl->init(); !e) {  // names the shader file, with the GLSL log
         std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
         status = 1;
     }
 
-    worker = std::make_unique<RenderWorker>();
-    vsyncApplied = ui.vsync;
+    loop.worker = std::make_unique<RenderWorker>();
+    loop.vsyncApplied = loop.vsync;
     while (status == 0) {
         const auto start = std::chrono::steady_clock::now();
         // While the accuracy job measures or a file loads, ten frames a second are enough for
         // the progress bar and leave the cores to the job (frame_loop.cpp skips unchanged engine
         // frames too); input still wakes the loop at once.
-        if (accuracy.running() || loading.running())
+        if (accuracy.job.running() || files.loading.running())
             glfwWaitEventsTimeout(0.1);
         else
             glfwPollEvents();
         const bool last = glfwWindowShouldClose(window) || keys.quit || gStopSignal ||
-                          (options.frames > 0 && frameCount + 1 >= options.frames);
+                          (options.frames > 0 && loop.frameCount + 1 >= options.frames);
         if (work.scaleChanged && options.uiScale <= 0.0) {  // moved to another monitor
-            const float scale = windowUiScale(*this);
+            const float scale = windowUiScale(window, options.uiScale);
             work.sidebarWidth =
                 static_cast<int>(static_cast<float>(work.sidebarWidth) * scale / work.scale + 0.5f);
             work.sidebarSizeSet = true;
@@ -352,41 +282,42 @@ int App::run() {
             glfwWaitEventsTimeout(0.1);
             continue;
         }
-        status = frame(start, last);
+        status = runFrame(*this, start, last);
         if (last) break;
     }
     // No job is in flight after a frame: `shown` is the newest picture (with the engine on its
     // own thread, the engine frame collected after the last swap).
-    worker->wait(display);
-    if (!shown) shown = &display;
-    accuracy.cancel();  // a ground truth in flight stops within milliseconds
-    accuracy.wait();
+    loop.worker->wait(loop.display);
+    if (!loop.shown) loop.shown = &loop.display;
+    accuracy.job.cancel();  // a ground truth in flight stops within milliseconds
+    accuracy.job.wait();
 
-    if (status == 0 && !options.screenshot.empty() && shown) {
-        if (Status e = saveFrameShot(*shown, options.screenshot); !e) {
+    if (status == 0 && !options.screenshot.empty() && loop.shown) {
+        if (Status e = saveFrameShot(*loop.shown, options.screenshot); !e) {
             std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
             status = 1;
         }
     }
     if (!options.statePath.empty()) {
-        const std::string text = stateText(model, frameCount) + rendererLogText(rendererLog) +
-                                 accuracyStateText(accuracy.report().get()) +
+        const std::string text = stateText(model, loop.frameCount) +
+                                 rendererLogText(loop.rendererLog) +
+                                 accuracyStateText(accuracy.job.report().get()) +
                                  workspaceStateText(*this) + inspectorStateText(*this);
         if (Status e = writeTextFile(options.statePath, text); !e) {
             std::fprintf(stderr, "facet-view: %s\n", e.error().what().c_str());
             status = 1;
         }
     }
-    loading.cancel();  // after --state, which tells whether a load was in flight
+    files.loading.cancel();  // after --state, which tells whether a load was in flight
     if (options.fpsReport) {
         // The first frames pay for first-touch allocations and ImGui's layout pass.
-        const std::size_t skip = std::min<std::size_t>(10, history.frames.size() / 5);
-        std::printf("%s\n", fpsReport(history, skip).c_str());
+        const std::size_t skip = std::min<std::size_t>(10, stats.history.frames.size() / 5);
+        std::printf("%s\n", fpsReport(stats.history, skip).c_str());
     }
 
-    worker.reset();
+    loop.worker.reset();
     twin.renderer.reset();  // GL objects go while the context is current
-    gl.reset();
+    loop.gl.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

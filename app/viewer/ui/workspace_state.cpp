@@ -1,11 +1,10 @@
-// The workspace's lines of the --state file, so the window tests can check the layout the
-// viewer really used (where the side bar, the frame and each overlay went) against the pixels
-// of --window-shot.
+#include "workspace_state.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
 
+#include "light_input.hpp"
 #include "light_marker.hpp"
 #include "viewer_app.hpp"
 
@@ -33,8 +32,8 @@ std::string workspaceStateText(const App& app) {
       << "\n";
     for (const auto& [name, r] : w.drawn) s << "window_" << name << " " << rect(r) << "\n";
     char loading[32];  // a load in flight (1) and its fraction, or 0 0
-    std::snprintf(loading, sizeof loading, "%d %.3f", app.loading.running() ? 1 : 0,
-                  app.loading.progress());
+    std::snprintf(loading, sizeof loading, "%d %.3f", app.files.loading.running() ? 1 : 0,
+                  app.files.loading.progress());
     s << "loading " << loading << "\n";
     s << "help " << (w.help ? 1 : 0) << "\n";
     s << "help_scrolls " << (w.helpScrolls ? 1 : 0) << "\n";
@@ -43,7 +42,7 @@ std::string workspaceStateText(const App& app) {
     char scale[32];
     std::snprintf(scale, sizeof scale, "%.3f", w.scale);
     s << "ui_scale " << scale << "\n";
-    s << "screenshot_folder " << app.ui.screenshotFolder << "\n";
+    s << "screenshot_folder " << app.screenshot.folder << "\n";
     const bool noticeShown =
         !w.notice.text.empty() && std::chrono::steady_clock::now() < w.notice.until;
     s << "notice " << (noticeShown ? w.notice.text : "") << "\n";
@@ -60,8 +59,8 @@ std::string workspaceStateText(const App& app) {
                   app.view.y + at.y * app.view.h / std::max(1, c.height),
                   markerInFrame(m, c.width, c.height) ? 1 : 0);
     s << "light_marker " << marker << "\n";
-    s << "light_marker_note " << w.markerNote << "\n";
-    s << "light_marker_note_rect " << rect(w.markerNoteRect) << "\n";
+    s << "light_marker_note " << app.light.note << "\n";
+    s << "light_marker_note_rect " << rect(app.light.noteRect) << "\n";
     return s.str();
 }
 

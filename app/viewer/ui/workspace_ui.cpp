@@ -1,8 +1,7 @@
-// The workspace's layout and its windows: the side bar at the left holds every panel, the image
-// area beside it shows the frame and nothing else but the overlays the user turns on (a compact
-// stats box in its top right corner, the help, a notice, the light marker, Compare's labels).
 // Pixels of the side bar and of the frame never overlap: the frame is rendered for the image
 // area (placeFrame) after the side bar took its width.
+
+#include "workspace_ui.hpp"
 
 #include <imgui.h>
 
@@ -11,7 +10,19 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "panels.hpp"
+#include "inspector.hpp"
+#include "key_actions.hpp"
+#include "light_input.hpp"
+#include "panel_widgets.hpp"
+#include "panels_accuracy.hpp"
+#include "panels_camera.hpp"
+#include "panels_compare.hpp"
+#include "panels_light.hpp"
+#include "panels_render.hpp"
+#include "panels_scene.hpp"
+#include "panels_screenshot.hpp"
+#include "panels_stats.hpp"
+#include "popups.hpp"
 #include "viewer_app.hpp"
 
 namespace facet::view {
@@ -23,7 +34,7 @@ constexpr ImGuiWindowFlags kOverlay =
     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
 
 SidebarState sidebarState(const App& app) {
-    if (!app.ui.showPanels) return SidebarState::Hidden;
+    if (!app.work.showPanels) return SidebarState::Hidden;
     const WorkspaceUi& w = app.work;
     // A narrow window starts with the strip, until << or >> says otherwise.
     const bool narrow = !w.keepSidebar && autoCollapsed(app.fbWidth, w.scale);
@@ -38,19 +49,28 @@ void sidebarHeader(App& app) {
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("facet");
     ImGui::SameLine();
-    ImGui::TextDisabled("%s",
-                        std::filesystem::path(app.model.scene.path).filename().string().c_str());
+    // The file name, cut at the front ("...name") where it would run under the buttons.
     const ImGuiStyle& style = ImGui::GetStyle();
-    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 2.0f * button - style.ItemSpacing.x);
+    const float buttons =
+        ImGui::GetWindowContentRegionMax().x - 2.0f * button - style.ItemSpacing.x;
+    const float room = buttons - style.ItemSpacing.x - ImGui::GetCursorPosX();
+    std::string name = std::filesystem::path(app.model.scene.path).filename().string();
+    if (ImGui::CalcTextSize(name.c_str()).x > room) {
+        while (!name.empty() && ImGui::CalcTextSize(("..." + name).c_str()).x > room)
+            name.erase(0, 1);
+        name = "..." + name;
+    }
+    ImGui::TextDisabled("%s", name.c_str());
+    ImGui::SameLine(buttons);
     if (ImGui::Button("?", ImVec2(button, button))) w.help = !w.help;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys and mouse (F1 or ?)");
     ImGui::SameLine();
     if (ImGui::Button("<<", ImVec2(button, button))) w.collapsed = w.collapseChosen = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Collapse the side bar (Tab hides it)");
     ImGui::Checkbox("stats (S)", &w.statsOverlay);
-    ImGui::SameLine();
-    ImGui::Checkbox("light (M)", &w.lightMarker);
-    ImGui::SameLine();
+    sameLineIfFits(checkWidth("light (M)"));
+    ImGui::Checkbox("light (M)", &app.light.shown);
+    sameLineIfFits(checkWidth("fullscreen"));
     bool full = w.fullscreen;
     if (ImGui::Checkbox("fullscreen", &full)) toggleFullscreen(app);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("F11");
@@ -97,7 +117,7 @@ void sidebar(App& app) {
     ImGui::PopStyleVar();
     leaveBackgroundToGl(app);
     if (open) {
-        noteWindow(app, "sidebar");
+        noteWindow(app.work, "sidebar");
         const int now = static_cast<int>(ImGui::GetWindowWidth());
         if (now != bar.w) {  // the user dragged the edge: that width from now on
             w.sidebarWidth = now;
@@ -105,6 +125,9 @@ void sidebar(App& app) {
         }
         sidebarHeader(app);
         ImGui::PushItemWidth(-130.0f * scale);  // room for the labels on the right
+        // Text wraps at the side bar's edge: a narrow bar (an 800-pixel window) shows every
+        // word of a note on two lines instead of cutting it off.
+        ImGui::PushTextWrapPos(0.0f);
         if (ImGui::CollapsingHeader("Scene")) scenePanel(app);
         // Open at start: Render and Camera; Compare alone when the viewer starts comparing two
         // interpolations; Render and Compare (the renderer, then the numbers) side by side.
@@ -112,15 +135,17 @@ void sidebar(App& app) {
         auto openIf = [](bool on) {
             return on ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None;
         };
-        if (ImGui::CollapsingHeader("Render", openIf(!app.options.compare))) renderPanel(app);
+        if (ImGui::CollapsingHeader("Render", openIf(!app.options.compare)))
+            renderPanel(app.model, app.compare.settings, app.twin, app.popups);
         if (ImGui::CollapsingHeader("Camera", openIf(!app.options.compare && !split)))
-            cameraPanel(app);
-        if (ImGui::CollapsingHeader("Light and material")) lightPanel(app);
+            cameraPanel(app.model, app.loop.vsync);
+        if (ImGui::CollapsingHeader("Light and material")) lightPanel(app.model);
         if (ImGui::CollapsingHeader("Texture")) texturePanel(app);
         if (ImGui::CollapsingHeader("Compare", openIf(app.options.compare || split)))
-            comparePanel(app);
-        if (ImGui::CollapsingHeader("Screenshot")) screenshotPanel(app);
+            comparePanel(app.compare, app.model, app.accuracy);
+        if (ImGui::CollapsingHeader("Screenshot")) screenshotPanel(app.screenshot);
         if (ImGui::CollapsingHeader("Stats")) statsPanel(app);
+        ImGui::PopTextWrapPos();
         ImGui::PopItemWidth();
         ImGui::TextDisabled("F1 or ?: every key and mouse action");
     }
@@ -142,7 +167,7 @@ void collapsedStrip(App& app) {
     const bool open = ImGui::Begin("##sidebar-strip", nullptr, flags);
     leaveBackgroundToGl(app);
     if (open) {
-        noteWindow(app, "sidebar");
+        noteWindow(app.work, "sidebar");
         if (ImGui::Button(">>", ImVec2(-1.0f, 0.0f))) {
             app.work.collapsed = false;
             app.work.collapseChosen = true;
@@ -163,10 +188,10 @@ void statsOverlay(App& app) {
                             ImGuiCond_Always, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.65f);
     if (ImGui::Begin("##stats-overlay", nullptr, kOverlay)) {
-        noteWindow(app, "stats");
-        const StageTimes m = app.history.recentMedian(60);
+        noteWindow(app.work, "stats");
+        const StageTimes m = app.stats.history.recentMedian(60);
         ImGui::Text("%.1f fps  %.2f ms", m.total > 0.0 ? 1000.0 / m.total : 0.0, m.total);
-        const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.enabled);
+        const FramePlan plan = planFrame(app.model.rendererChoice, app.compare.settings.enabled);
         const Camera& c = app.model.scene.camera;
         // A small image area gets the first line only: the box never hides much of the picture.
         if (static_cast<float>(image.w) >= 600.0f * app.work.scale) {
@@ -195,7 +220,7 @@ void refusedOverlay(App& app) {
                                         ImVec2(0.8f * static_cast<float>(image.w), 1e6f));
     ImGui::SetNextWindowBgAlpha(0.9f);
     if (ImGui::Begin("##refused", nullptr, kOverlay)) {
-        noteWindow(app, "refused");
+        noteWindow(app.work, "refused");
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "Not drawn");
         ImGui::TextUnformatted(why.c_str());
@@ -216,7 +241,7 @@ void noticeOverlay(App& app) {
                             ImGuiCond_Always, ImVec2(0.5f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (ImGui::Begin("##notice", nullptr, kOverlay)) {
-        noteWindow(app, "notice");
+        noteWindow(app.work, "notice");
         ImGui::TextUnformatted(n.text.c_str());
     }
     ImGui::End();
@@ -261,7 +286,7 @@ void helpOverlay(App& app) {
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
     if (ImGui::Begin("Keys and mouse (F1, ? or Esc closes)", &w.help, flags)) {
-        noteWindow(app, "help");
+        noteWindow(app.work, "help");
         const std::vector<HelpRow> keys = helpRows();
         const ImVec4 keyColour(1, 0.85f, 0.4f, 1), mouseColour(0.5f, 0.8f, 1, 1);
         // Side by side when both tables fit the window's width next to each other.
@@ -300,11 +325,11 @@ void helpOverlay(App& app) {
 
 }  // namespace
 
-void noteWindow(App& app, const char* name) {
+void noteWindow(WorkspaceUi& work, const char* name) {
     const ImVec2 p = ImGui::GetWindowPos();
     const ImVec2 s = ImGui::GetWindowSize();
-    app.work.drawn[name] = {static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(s.x),
-                            static_cast<int>(s.y)};
+    work.drawn[name] = {static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(s.x),
+                        static_cast<int>(s.y)};
 }
 
 void placeFrame(App& app) {
@@ -326,10 +351,11 @@ void drawPanels(App& app) {
     app.work.drawn.clear();
     app.work.backdrop = {};
     drawLightMarker(app);
-    if (planFrame(app.model.rendererChoice, app.compare.enabled).twin || app.compare.enabled)
-        compareOverlay(app);
+    if (planFrame(app.model.rendererChoice, app.compare.settings.enabled).twin ||
+        app.compare.settings.enabled)
+        compareOverlay(app.compare, app.model.rendererChoice, app.view, app.work.scale);
     sceneFileEvents(app);
-    errorPopup(app);
+    errorPopup(app.popups);
     quitPopup(app);
     saveDialog(app);
     switch (sidebarState(app)) {
@@ -343,18 +369,18 @@ void drawPanels(App& app) {
             break;
     }
     if (app.work.statsOverlay) statsOverlay(app);
-    accuracyWindow(app);
+    accuracyWindow(app.accuracy, app.model, app.work);
     inspectorWindow(app);
     noticeOverlay(app);
     refusedOverlay(app);
     if (app.work.help) helpOverlay(app);
 }
 
-void showNotice(App& app, const std::string& text) {
-    app.work.notice.text = text;
-    app.work.notice.until = std::chrono::steady_clock::now() +
-                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                std::chrono::duration<double>(kNoticeSeconds));
+void showNotice(WorkspaceUi& work, const std::string& text) {
+    work.notice.text = text;
+    work.notice.until = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(kNoticeSeconds));
 }
 
 }  // namespace facet::view

@@ -3,6 +3,8 @@
 // summary row per triangle that reached the pixel (green: written, red: failed the depth test,
 // grey: excluded by coverage), and under each a fold with every stage's values.
 
+#include "inspector.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include <sstream>
 
 #include "facet/evaluation/ground_truth.hpp"
-#include "inspector.hpp"
 #include "viewer_app.hpp"
 #include "workspace_ui.hpp"
 
@@ -208,7 +209,7 @@ void summary(App& app, const InspectorState& s) {
         accuracyView(app.model.scene, app.model.sceneVersion, app.model.settings);
     if (!(now == s.view))
         ImGui::TextColored(kWarn, "stale: the view or settings changed since (Re-inspect)");
-    if (app.model.rendererChoice != RendererChoice::Cpu || app.compare.enabled)
+    if (app.model.rendererChoice != RendererChoice::Cpu || app.compare.settings.enabled)
         ImGui::TextDisabled("(the CPU engine's frame of these settings is inspected)");
 
     std::string label =
@@ -367,7 +368,7 @@ void inspectorWindow(App& app) {
         ImVec2(static_cast<float>(image.w) - 2.0f * margin, height));
     ImGui::SetNextWindowBgAlpha(0.9f);
     if (ImGui::Begin("Pixel inspector", &s.open, ImGuiWindowFlags_NoSavedSettings)) {
-        noteWindow(app, "inspector");
+        noteWindow(app.work, "inspector");
         summary(app, s);
         const PixelHistory& h = s.history;
         std::size_t covered = 0;

@@ -1,4 +1,4 @@
-#include "panels.hpp"
+#include "popups.hpp"
 
 #include <imgui.h>
 
@@ -6,19 +6,28 @@
 
 namespace facet::view {
 
-void errorPopup(App& app) {
-    const char* id = "Error##facet";
-    if (app.ui.popupPending) {
+void showError(PopupState& popups, const std::string& title, const std::string& message) {
+    popups.title = title;
+    popups.message = message;
+    popups.pending = true;
+}
+
+bool beginCentredModal(const char* id, bool& pending) {
+    if (pending) {
         ImGui::OpenPopup(id);
-        app.ui.popupPending = false;
+        pending = false;
     }
     const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted(app.ui.popupTitle.c_str());
+    return ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+}
+
+void errorPopup(PopupState& popups) {
+    if (beginCentredModal("Error##facet", popups.pending)) {
+        ImGui::TextUnformatted(popups.title.c_str());
         ImGui::Separator();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 45.0f);
-        ImGui::TextUnformatted(app.ui.popupMessage.c_str());
+        ImGui::TextUnformatted(popups.message.c_str());
         ImGui::PopTextWrapPos();
         if (ImGui::Button("OK", ImVec2(120.0f, 0.0f)) ||
             ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)))
@@ -27,17 +36,21 @@ void errorPopup(App& app) {
     }
 }
 
-void quitPopup(App& app) {
-    WorkspaceUi& w = app.work;
-    const char* id = "Quit facet-view?##quit";
-    if (w.quitPending) {
-        ImGui::OpenPopup(id);
-        w.quitPending = false;
+void askToQuit(App& app) {
+    PopupState& p = app.popups;
+    // Asked already (the question is open): the second Ctrl+Q or close click quits.
+    if (p.quitAsked || !app.model.unsaved()) {
+        app.keys.quit = true;
+        return;
     }
-    const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        noteWindow(app, "quit_question");
+    p.quitAsked = true;
+    p.quitPending = true;
+}
+
+void quitPopup(App& app) {
+    PopupState& p = app.popups;
+    if (beginCentredModal("Quit facet-view?##quit", p.quitPending)) {
+        noteWindow(app.work, "quit_question");
         ImGui::TextUnformatted(
             "The scene has unsaved changes (camera, light, material or settings).");
         ImGui::TextDisabled("Ctrl+Q again quits, Esc stays.");
@@ -46,14 +59,14 @@ void quitPopup(App& app) {
             if (writeShownScene(app)) app.keys.quit = true;
             ImGui::CloseCurrentPopup();
         }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("to %s", app.ui.saveScenePath.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("to %s", app.files.saveScenePath.c_str());
         ImGui::SameLine();
         if (ImGui::Button("Quit without saving")) app.keys.quit = true;
         ImGui::SameLine();
         if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     } else {
-        w.quitAsked = false;  // cancelled (or Esc): the next Ctrl+Q asks again
+        p.quitAsked = false;  // cancelled (or Esc): the next Ctrl+Q asks again
     }
 }
 
