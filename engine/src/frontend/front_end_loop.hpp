@@ -215,17 +215,19 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
         return fragments;
     }
 
-    const LaneInput lanes{in.indices.data(), nv,      screen, job.width, job.height,
-                          job.sampleReach,   job.cull};
+    const LaneInput lanes{in.indices.data(), nv,       screen,        job.width, job.height,
+                          job.sampleReach,   job.cull, in.clip.data()};
     LaneChunk chunk;
     for (std::size_t c = first; c < end; c += LaneChunk::kSize) {
         job.lanes(lanes, c, std::min(end, c + LaneChunk::kSize), chunk);
         stats.trianglesIn += chunk.trianglesIn;
         stats.trianglesCulled += chunk.trianglesCulled;
         stats.trianglesRasterized += chunk.trianglesRasterized;
+        std::uint32_t survivor = 0;  // survivors before entry e (LaneChunk::planes)
         for (std::uint32_t e = 0; e < chunk.count; ++e) {
-            // The clip positions of a triangle a few entries ahead (see kPrefetch).
-            if (e + kPrefetch / 2 < chunk.count) {
+            // The clip positions of a triangle a few entries ahead (see kPrefetch); not needed
+            // when the lanes built the planes (they read the clip positions already).
+            if (!chunk.planes && e + kPrefetch / 2 < chunk.count) {
                 const std::size_t ahead =
                     3 * (c + (chunk.at[e + kPrefetch / 2] & ~LaneChunk::kScalar));
                 for (std::size_t j = ahead; j < ahead + 3; ++j)
@@ -245,9 +247,26 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
             tri.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
             tri.area2 = chunk.area2[k];
             const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
-            ClipVertex v[3];
-            fetch(idx, v);
-            planesAndEmit(tri, v);
+            if (!chunk.planes) {
+                ClipVertex v[3];
+                fetch(idx, v);
+                planesAndEmit(tri, v);
+                continue;
+            }
+            // 5. Planes built by the lanes; only the varyings are fetched here.
+            const std::uint32_t j = survivor++;
+            if (chunk.base[0][j] < 0) continue;  // degenerate in double: makePlanes() fails
+            planes.baseX = chunk.base[0][j];
+            planes.baseY = chunk.base[1][j];
+            float* const to[5] = {planes.l1, planes.l2, planes.u1, planes.u2, planes.q};
+            for (int i = 0; i < 5; ++i)
+                for (int m = 0; m < 3; ++m) to[i][m] = chunk.plane[3 * i + m][j];
+            if (count > 0) {
+                float a[3][kMaxVaryings];
+                for (int m = 0; m < 3; ++m) fetchVaryings(in, layout, idx[m], a[m]);
+                setVaryingPlanes(a[0], a[1], a[2], count, planes);
+            }
+            fragments += emit(tri, planes);
         }
     }
     return fragments;
