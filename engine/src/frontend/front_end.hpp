@@ -122,6 +122,7 @@ struct LaneChunk {
     std::int32_t y[3][kSize + kSlack];    ///< SnappedTriangle::y
     std::int32_t box[4][kSize + kSlack];  ///< SnappedTriangle::box: x0, y0, x1, y1
     std::int32_t area2[kSize + kSlack];   ///< SnappedTriangle::area2
+    std::int32_t e0[3][kSize + kSlack];   ///< CoverageSetup::e0 (edgesOf()), by triangle
     /// Whether the lanes built the survivors' planes below (LaneInput::clip given); else the
     /// loop builds them. Indexed by survivor: the loop's n-th entry without kScalar is survivor
     /// n, so the planes are stored a whole vector of survivors at a time.

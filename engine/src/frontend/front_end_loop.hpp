@@ -72,13 +72,13 @@ inline void planeBase(const glm::dvec2 (&s)[3], float W, float H, int& baseX, in
     baseY = floorClamped(std::min({s[0].y, s[1].y, s[2].y}), H - 1.0);
 }
 
-/// Runs the front end over triangles [first, end) of `job` and calls emit(triangle, planes)
-/// (a SnappedTriangle with a non-empty box, and the planes of the whole triangle, unclipped by
-/// the guard band) for each part that covers pixels; returns the sum of what `emit` returned.
-/// Adds its counters to `stats`. drawTriangles() is this with a rasterizer as `emit`.
-/// With job.lanes (and job.screen), chunks of triangles first take the lanes stage, which
-/// settles most of them a vector at a time; the loop then visits only its survivors and the
-/// triangles it leaves to the scalar stages below, in submission order, so the triangles
+/// Runs the front end over triangles [first, end) of `job` and calls emit(setup, planes)
+/// (the coverage setup of a snapped triangle with a non-empty box, edgesOf(), and the planes of
+/// the whole triangle, unclipped by the guard band) for each part that covers pixels; returns the
+/// sum of what `emit` returned. Adds its counters to `stats`. drawTriangles() is this with a
+/// rasterizer as `emit`. With job.lanes (and job.screen), chunks of triangles first take the lanes
+/// stage, which settles most of them a vector at a time; the loop then visits only its survivors
+/// and the triangles it leaves to the scalar stages below, in submission order, so the triangles
 /// emitted and the counters are the same either way.
 template <class Emit>
 std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emit&& emit,
@@ -94,19 +94,20 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
     const std::size_t nv = in.clip.size();
     const int count = layout.count();
     Planes planes;
+    CoverageSetup setup;
     std::size_t fragments = 0;
     end = std::min(end, in.indices.size() / 3);
 
     auto fetch = [&](const std::uint32_t(&idx)[3], ClipVertex(&v)[3]) {
         for (int j = 0; j < 3; ++j) v[j] = fetchVertex(in, layout, idx[j]);
     };
-    // 5. Planes of a triangle in the guard band that covers a pixel centre, then emit.
-    auto planesAndEmit = [&](const SnappedTriangle& tri, const ClipVertex(&v)[3]) {
+    // 5. Planes of a triangle in the guard band that covers a pixel centre, then emit `setup`.
+    auto planesAndEmit = [&](const ClipVertex(&v)[3]) {
         glm::dvec2 s[3];
         for (int j = 0; j < 3; ++j) s[j] = screenPosition(v[j].pos);
         int baseX = 0, baseY = 0;
         planeBase(s, space.W, space.H, baseX, baseY);
-        if (makePlanes(s, v, count, baseX, baseY, planes)) fragments += emit(tri, planes);
+        if (makePlanes(s, v, count, baseX, baseY, planes)) fragments += emit(setup, planes);
     };
 
     // The scalar stages, one triangle.
@@ -145,7 +146,8 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                 }
                 drawn = true;
                 if (tri.box.empty() || (sampleReach == 0 && coversNoCentre(tri))) return;
-                planesAndEmit(tri, vertices());
+                edgesOf(tri, setup);
+                planesAndEmit(vertices());
                 return;
             }
             // Beyond the guard band: 5. planes of the whole triangle, 4. cull, then the screen
@@ -169,7 +171,9 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                          sampleReach) == Facing::Degenerate)
                     continue;
                 drawn = true;
-                if (!tri.box.empty()) fragments += emit(tri, planes);
+                if (tri.box.empty()) continue;
+                edgesOf(tri, setup);
+                fragments += emit(setup, planes);
             }
         };
 
@@ -239,18 +243,21 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                 triangle(t);
                 continue;
             }
-            SnappedTriangle tri;
-            for (int j = 0; j < 3; ++j) {
-                tri.x[j] = chunk.x[j][k];
-                tri.y[j] = chunk.y[j][k];
+            // The coverage setup as edgesOf() gives it: the lanes' edges, the steps from the
+            // snapped vertices.
+            for (int i = 0; i < 3; ++i) {
+                const int m = (i + 1) % 3;
+                setup.e0[i] = chunk.e0[i][k];
+                setup.stepX[i] = -std::int64_t{chunk.y[m][k] - chunk.y[i][k]} * kSubPixel;
+                setup.stepY[i] = std::int64_t{chunk.x[m][k] - chunk.x[i][k]} * kSubPixel;
             }
-            tri.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
-            tri.area2 = chunk.area2[k];
+            setup.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
+            setup.area2 = chunk.area2[k];
             const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
             if (!chunk.planes) {
                 ClipVertex v[3];
                 fetch(idx, v);
-                planesAndEmit(tri, v);
+                planesAndEmit(v);
                 continue;
             }
             // 5. Planes built by the lanes; only the varyings are fetched here.
@@ -266,7 +273,7 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                 for (int m = 0; m < 3; ++m) fetchVaryings(in, layout, idx[m], a[m]);
                 setVaryingPlanes(a[0], a[1], a[2], count, planes);
             }
-            fragments += emit(tri, planes);
+            fragments += emit(setup, planes);
         }
     }
     return fragments;

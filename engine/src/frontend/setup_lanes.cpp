@@ -151,31 +151,35 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
         const VecI cy = hn::ShiftLeft<kSubPixelBits>(by0);
         const VecI xs[3] = {hn::Sub(x0, cx), hn::Sub(x1, cx), hn::Sub(x2, cx)};
         const VecI ys[3] = {hn::Sub(y0, cy), hn::Sub(y1, cy), hn::Sub(y2, cy)};
+        // edgesOf(): each edge at the box's first pixel centre, top-left bias included, in 32
+        // bits (exact for boxes under kLaneExtent).
+        const VecI one = hn::Set(d, 1);
+        const VecI half = hn::Set(d, static_cast<std::int32_t>(kSubPixel / 2));
+        VecI edges[3];
+        VecI c00 = zero, c10 = zero, c01 = zero, c11 = zero;  // OR of the edges at each centre
+        for (int i = 0; i < 3; ++i) {
+            const int j = (i + 1) % 3;
+            const VecI dx = hn::Sub(xs[j], xs[i]), dy = hn::Sub(ys[j], ys[i]);
+            const MaskI topLeft =
+                hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
+            const VecI e = hn::Sub(
+                hn::Sub(hn::Mul(dx, hn::Sub(half, ys[i])), hn::Mul(dy, hn::Sub(half, xs[i]))),
+                hn::IfThenZeroElse(topLeft, one));
+            edges[i] = e;
+            const VecI stepX = hn::Neg(hn::ShiftLeft<kSubPixelBits>(dy));
+            const VecI stepY = hn::ShiftLeft<kSubPixelBits>(dx);
+            c00 = hn::Or(c00, e);
+            c10 = hn::Or(c10, hn::Add(e, stepX));
+            c01 = hn::Or(c01, hn::Add(e, stepY));
+            c11 = hn::Or(c11, hn::Add(hn::Add(e, stepX), stepY));
+        }
         if (in.sampleReach == 0) {
             // coversNoCentre(): boxes of at most 2×2 pixels whose centres the edge functions
-            // (edgesOf(), top-left bias included) all leave out end here.
-            const VecI one = hn::Set(d, 1);
+            // all leave out end here.
             const MaskI wide = hn::Eq(hn::Sub(bx1, bx0), one);
             const MaskI tall = hn::Eq(hn::Sub(by1, by0), one);
             const MaskI small = hn::And(hn::Lt(hn::Sub(bx1, bx0), hn::Set(d, 2)),
                                         hn::Lt(hn::Sub(by1, by0), hn::Set(d, 2)));
-            const VecI half = hn::Set(d, static_cast<std::int32_t>(kSubPixel / 2));
-            VecI c00 = zero, c10 = zero, c01 = zero, c11 = zero;  // OR of the edges at each centre
-            for (int i = 0; i < 3; ++i) {
-                const int j = (i + 1) % 3;
-                const VecI dx = hn::Sub(xs[j], xs[i]), dy = hn::Sub(ys[j], ys[i]);
-                const MaskI topLeft =
-                    hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
-                const VecI e = hn::Sub(
-                    hn::Sub(hn::Mul(dx, hn::Sub(half, ys[i])), hn::Mul(dy, hn::Sub(half, xs[i]))),
-                    hn::IfThenZeroElse(topLeft, one));
-                const VecI stepX = hn::Neg(hn::ShiftLeft<kSubPixelBits>(dy));
-                const VecI stepY = hn::ShiftLeft<kSubPixelBits>(dx);
-                c00 = hn::Or(c00, e);
-                c10 = hn::Or(c10, hn::Add(e, stepX));
-                c01 = hn::Or(c01, hn::Add(e, stepY));
-                c11 = hn::Or(c11, hn::Add(hn::Add(e, stepX), stepY));
-            }
             const MaskI covered = hn::Or(
                 hn::Or(hn::Not(hn::Lt(c00, zero)), hn::And(wide, hn::Not(hn::Lt(c10, zero)))),
                 hn::Or(hn::And(tall, hn::Not(hn::Lt(c01, zero))),
@@ -197,6 +201,7 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
             hn::StoreU(bx1, d, out.box[2] + at);
             hn::StoreU(by1, d, out.box[3] + at);
             hn::StoreU(area, d, out.area2 + at);
+            for (int i = 0; i < 3; ++i) hn::StoreU(edges[i], d, out.e0[i] + at);
         }
     }
 
