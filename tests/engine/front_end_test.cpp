@@ -23,6 +23,7 @@
 
 #include "binning/tiles.hpp"
 #include "frontend/front_end.hpp"
+#include "frontend/front_end_loop.hpp"
 #include "pipeline/span_targets.hpp"
 
 namespace facet::detail {
@@ -478,6 +479,123 @@ INSTANTIATE_TEST_SUITE_P(Configs, LaneSetup,
                          testing::Values(Config{false, 8, 0, false}, Config{true, 8, 0, true},
                                          Config{false, 4, 0, true}, Config{true, 8, 96, false}),
                          configName);
+
+/// Small triangles for the lanes' planes: depths over four decades (so 1/w and the weights span
+/// every exponent the pixel loops see), thin ones, ones partly off the image (the base clamped),
+/// and pairs exactly collinear in double whose snapped vertices are not (twice the area 0 in
+/// double: makePlanes() refuses them, the coverage stage does not), each pair placed so that one
+/// of the two covers a pixel centre and reaches the planes.
+Mesh planeCases() {
+    Mesh m;
+    std::mt19937 rng(20261126);
+    std::uniform_real_distribution<double> px(-6.0, kWidth + 6.0), py(-6.0, kHeight + 6.0),
+        size(-5.0, 5.0), exponent(-1.5, 2.5), thin(-0.02, 0.02);
+    auto w = [&] { return static_cast<float>(std::pow(10.0, exponent(rng))); };
+    for (int i = 0; i < 6000; ++i) {
+        const double x = px(rng), y = py(rng);
+        if (i % 4 == 3) {  // a sliver along a random direction
+            const double dx = size(rng), dy = size(rng);
+            m.add(at(x, y, w()), at(x + dx, y + dy, w()),
+                  at(x + dx / 2 + thin(rng), y + dy / 2 + thin(rng), w()));
+        } else {
+            m.add(at(x, y, w()), at(x + size(rng), y + size(rng), w()),
+                  at(x + size(rng), y + size(rng), w()));
+        }
+    }
+    for (int i = 0; i < 40; ++i) {
+        // On the line y = 2x + 0.5 through the centre (10.5, 21.5) + (i, i): A and C on the grid,
+        // B a little along the line, off the grid; B snaps to one side of AC, or the other.
+        const double ox = 10.0 + 3 * i, oy = 20.5 + 3 * i + 3 * i;
+        const double bx = ox + 0.5, by = oy + 1.0;
+        m.add(at(ox, oy, 1.0f), at(bx + 1.0 / 1024, by + 1.0 / 512, 1.0f),
+              at(ox + 1.0, oy + 2.0, 1.0f));
+        m.add(at(ox, oy, 1.0f), at(bx + 1.0 / 512, by + 1.0 / 256, 1.0f),
+              at(ox + 1.0, oy + 2.0, 1.0f));
+    }
+    return m;
+}
+
+// The lanes' planes (LaneChunk::planes), survivor by survivor, against the scalar stages
+// (screenPosition(), planeBase(), makePlanes()) bit for bit, on every SIMD target; their edges
+// against edgesOf() of their own snapped triangle.
+TEST(LanePlanes, EqualMakePlanesBitForBitOnEveryTarget) {
+    const Mesh mesh = planeCases();
+    const DrawInput in = mesh.input();
+    const ScreenSpace space = ScreenSpace::of(kWidth, kHeight, kNear, kSubPixelBits);
+    std::vector<ScreenVertex> screen;
+    for (const glm::vec4& p : mesh.clip) screen.push_back(space.vertex(p));
+    const std::size_t triangles = mesh.indices.size() / 3;
+    const LaneInput lanesIn{
+        in.indices.data(), in.clip.size(), screen.data(), kWidth, kHeight, 0, false,
+        in.clip.data()};
+
+    hwy::SetSupportedTargetsForTest(0);
+    const std::int64_t targets = spanTargetsCompiled() & hwy::SupportedTargets();
+    std::size_t tested = 0;
+    for (std::int64_t rest = targets; rest != 0; rest &= rest - 1) {
+        const std::int64_t target = rest & -rest;
+        hwy::SetSupportedTargetsForTest(target);
+        const LaneSetupFn lanes = laneSetup();
+        hwy::SetSupportedTargetsForTest(0);
+        ASSERT_NE(lanes, nullptr);
+        const char* name = hwy::TargetName(target);
+        std::size_t checked = 0, refused = 0, mismatched = 0;
+        LaneChunk chunk;
+        // Starting at 3: chunks that do not start on a whole vector of triangles.
+        for (std::size_t c = 3; c < triangles; c += LaneChunk::kSize) {
+            lanes(lanesIn, c, std::min(triangles, c + LaneChunk::kSize), chunk);
+            ASSERT_TRUE(chunk.planes) << name;
+            std::uint32_t j = 0;
+            for (std::uint32_t e = 0; e < chunk.count; ++e) {
+                if (chunk.at[e] & LaneChunk::kScalar) continue;
+                const std::uint32_t k = chunk.at[e];
+                const std::size_t t = 3 * (c + k);
+                glm::dvec2 s[3];
+                ClipVertex v[3];
+                for (int m = 0; m < 3; ++m) {
+                    v[m] = fetchVertex(in, VaryingLayout{}, in.indices[t + m]);
+                    s[m] = screenPosition(v[m].pos);
+                }
+                int baseX = 0, baseY = 0;
+                front::planeBase(s, space.W, space.H, baseX, baseY);
+                Planes p;
+                const bool usable = makePlanes(s, v, 0, baseX, baseY, p);
+                const std::int32_t laneBaseX = chunk.base[0][j];
+                bool same = usable == (laneBaseX >= 0);
+                if (usable && same) {
+                    const float* want[5] = {p.l1, p.l2, p.u1, p.u2, p.q};
+                    same = baseX == laneBaseX && baseY == chunk.base[1][j];
+                    for (int i = 0; i < 5; ++i)
+                        for (int m = 0; m < 3; ++m)
+                            same = same && std::memcmp(&want[i][m], &chunk.plane[3 * i + m][j],
+                                                       sizeof(float)) == 0;
+                }
+                SnappedTriangle tri;
+                for (int m = 0; m < 3; ++m) {
+                    tri.x[m] = chunk.x[m][k];
+                    tri.y[m] = chunk.y[m][k];
+                }
+                tri.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
+                tri.area2 = chunk.area2[k];
+                CoverageSetup edges;
+                edgesOf(tri, edges);
+                for (int m = 0; m < 3; ++m) same = same && edges.e0[m] == chunk.e0[m][k];
+                if (!same && ++mismatched <= 5)
+                    ADD_FAILURE() << name << ": triangle " << c + k << " differs";
+                refused += usable ? 0 : 1;
+                ++checked;
+                ++j;
+            }
+        }
+        EXPECT_EQ(mismatched, 0u) << name;
+        EXPECT_GT(checked, 3000u) << name;  // not vacuous: most triangles reach the planes
+        EXPECT_GE(refused, 20u) << name;    // and the collinear pairs reach makePlanes' refusal
+        std::printf("lanes' planes checked on %s: %zu triangles, %zu refused\n", name, checked,
+                    refused);
+        ++tested;
+    }
+    EXPECT_GE(tested, 1u);
+}
 
 // The snapped positions of the vertex pass are the grid's rounding of the screen position,
 // written in 32 bits without loss: checked against SnapGrid on positions up to the guard band's

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstring>
+#include <new>
 #include <type_traits>
 #include <utility>
 
@@ -89,7 +90,7 @@ void addCounters(RenderStats& to, const RenderStats& from) {
 struct Binner {
     TileRenderer::Slice& slice;
 
-    std::size_t operator()(const SnappedTriangle& tri, const Planes& planes) const {
+    std::size_t operator()(const CoverageSetup& setup, const Planes& planes) const {
         TileRenderer::Slice& s = slice;
         const std::size_t at = s.used;
         if (at + s.recordBytes > s.records.size() * sizeof(TileRenderer::Line))
@@ -97,21 +98,20 @@ struct Binner {
                                       (at + s.recordBytes) / sizeof(TileRenderer::Line) + 1));
         std::byte* record = reinterpret_cast<std::byte*>(s.records.data()) + at;
         s.used = at + s.recordBytes;
-        CoverageSetup setup;
-        edgesOf(tri, setup);
-        RecordHead head;
-        std::memcpy(head.e0, setup.e0, sizeof head.e0);
-        head.box = tri.box;
-        for (int i = 0; i < 2; ++i) {
-            head.dx[i] = static_cast<std::int32_t>(tri.x[i + 1] - tri.x[i]);
-            head.dy[i] = static_cast<std::int32_t>(tri.y[i + 1] - tri.y[i]);
+        // Written in place (records start at multiples of 8 bytes in cache-line aligned
+        // storage): a head built on the stack and copied cost a spill and a reload per field.
+        auto* head = new (record) RecordHead;
+        for (int i = 0; i < 3; ++i) head->e0[i] = setup.e0[i];
+        head->box = setup.box;
+        for (int i = 0; i < 2; ++i) {  // the vertex differences: the steps are ∓256 times them
+            head->dx[i] = static_cast<std::int32_t>(setup.stepY[i] >> kSubPixelBits);
+            head->dy[i] = static_cast<std::int32_t>(-(setup.stepX[i] >> kSubPixelBits));
         }
-        head.baseX = planes.baseX;
-        head.baseY = planes.baseY;
-        std::memcpy(head.q, planes.q, sizeof head.q);
-        std::memcpy(record, &head, sizeof head);
+        head->baseX = planes.baseX;
+        head->baseY = planes.baseY;
+        for (int i = 0; i < 3; ++i) head->q[i] = planes.q[i];
         if (s.varyings > 0) {
-            std::byte* rest = record + sizeof head;
+            std::byte* rest = record + sizeof(RecordHead);
             std::memcpy(rest, planes.l1, kWeightBytes);
             rest += kWeightBytes;
             withVaryingCount(s.varyings, [&](auto count) {
@@ -123,9 +123,13 @@ struct Binner {
         }
 
         const auto offset = static_cast<std::uint32_t>(at);
-        const PixelRect& b = tri.box;
-        const int tx0 = b.x0 / kTileSize, tx1 = b.x1 / kTileSize;
-        const int ty0 = b.y0 / kTileSize, ty1 = b.y1 / kTileSize;
+        // Boxes lie in the image (coordinates ≥ 0): unsigned division is a shift.
+        const PixelRect& b = setup.box;
+        const auto tile = [](int v) {
+            return static_cast<int>(static_cast<unsigned>(v) / unsigned{kTileSize});
+        };
+        const int tx0 = tile(b.x0), tx1 = tile(b.x1);
+        const int ty0 = tile(b.y0), ty1 = tile(b.y1);
         const auto tiles = static_cast<std::size_t>((tx1 - tx0 + 1) * (ty1 - ty0 + 1));
         if (s.entryCount + tiles > s.entries.size())
             s.entries.resize(std::max(2 * s.entries.size(), s.entryCount + tiles));

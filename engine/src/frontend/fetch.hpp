@@ -46,12 +46,12 @@ struct ClipVertex {
     std::array<float, kMaxVaryings> a;
 };
 
-/// Fetches vertex i's clip position and the varyings the layout asks for. Missing streams give
-/// white, (0, 0) and zero normals, so a layout never reads past a span.
-inline ClipVertex fetchVertex(const DrawInput& in, const VaryingLayout& layout, std::size_t i) {
-    ClipVertex v{in.clip[i], {}};
+/// Writes vertex i's varyings that the layout asks for to a[0 … layout.count()). Missing
+/// streams give white, (0, 0) and zero normals, so a layout never reads past a span.
+inline void fetchVaryings(const DrawInput& in, const VaryingLayout& layout, std::size_t i,
+                          float* a) {
     auto put = [&](int at, const auto& value, int n) {
-        for (int k = 0; k < n; ++k) v.a[static_cast<std::size_t>(at + k)] = value[k];
+        for (int k = 0; k < n; ++k) a[at + k] = value[k];
     };
     if (layout.color) put(layout.colorAt(), in.colors.empty() ? glm::vec3(1.0f) : in.colors[i], 3);
     if (layout.uv) put(layout.uvAt(), in.uvs.empty() ? glm::vec2(0.0f) : in.uvs[i], 2);
@@ -59,6 +59,12 @@ inline ClipVertex fetchVertex(const DrawInput& in, const VaryingLayout& layout, 
         put(layout.normalAt(), in.normals.empty() ? glm::vec3(0.0f) : in.normals[i], 3);
         put(layout.positionAt(), in.positions.empty() ? glm::vec3(0.0f) : in.positions[i], 3);
     }
+}
+
+/// Fetches vertex i's clip position and the varyings the layout asks for (fetchVaryings()).
+inline ClipVertex fetchVertex(const DrawInput& in, const VaryingLayout& layout, std::size_t i) {
+    ClipVertex v{in.clip[i], {}};
+    fetchVaryings(in, layout, i, v.a.data());
     return v;
 }
 

@@ -14,11 +14,9 @@ std::size_t drawTriangles(const DrawInput& in, const VaryingLayout& layout, bool
     const DrawJob job{&in,         layout, cull,
                       width,       height, subPixelBits,
                       sampleReach, screen, screen ? laneSetup() : nullptr};
-    CoverageSetup setup;
     return front::frontEnd(
         job, first, end,
-        [&](const SnappedTriangle& tri, const Planes& planes) {
-            edgesOf(tri, setup);
+        [&](const CoverageSetup& setup, const Planes& planes) {
             return emit(context, setup, planes);
         },
         stats);

@@ -100,6 +100,9 @@ struct LaneInput {
     int width = 0, height = 0;               ///< image size in pixels
     int sampleReach = 0;                     ///< as DrawJob::sampleReach
     bool cull = false;                       ///< drop back faces
+    /// The clip positions, for the survivors' planes (LaneChunk::planes); null: the loop builds
+    /// them one triangle at a time.
+    const glm::vec4* clip = nullptr;
 };
 
 /// What the lanes stage tells the front end's loop of a chunk of up to kSize triangles: in
@@ -119,16 +122,28 @@ struct LaneChunk {
     std::int32_t y[3][kSize + kSlack];    ///< SnappedTriangle::y
     std::int32_t box[4][kSize + kSlack];  ///< SnappedTriangle::box: x0, y0, x1, y1
     std::int32_t area2[kSize + kSlack];   ///< SnappedTriangle::area2
-    std::size_t trianglesIn = 0;          ///< RenderStats' counters of the lanes' triangles
+    std::int32_t e0[3][kSize + kSlack];   ///< CoverageSetup::e0 (edgesOf()), by triangle
+    /// Whether the lanes built the survivors' planes below (LaneInput::clip given); else the
+    /// loop builds them. Indexed by survivor: the loop's n-th entry without kScalar is survivor
+    /// n, so the planes are stored a whole vector of survivors at a time.
+    bool planes = false;
+    /// Planes::baseX, baseY of each survivor; baseX −1 where makePlanes() would return false
+    /// (twice the area 0 in double), which the loop then drops as the scalar path does.
+    std::int32_t base[2][kSize + kSlack];
+    /// Planes::l1, l2, u1, u2 and q of each survivor, three floats each in that order.
+    float plane[15][kSize + kSlack];
+    std::size_t trianglesIn = 0;  ///< RenderStats' counters of the lanes' triangles
     std::size_t trianglesCulled = 0;
     std::size_t trianglesRasterized = 0;
 };
 
 /// The lanes stage: reject, cull, box, and the exit for boxes without a pixel centre, for
 /// triangles [first, end) of `in` (end − first ≤ LaneChunk::kSize), a whole vector of
-/// triangles at once. Takes the triangles whose vertices are all in front of the near plane
-/// and in the guard band and whose snapped box spans under kLaneExtent grid units each way
-/// (so that every edge product fits 32 bits); leaves the others to the scalar path.
+/// triangles at once; then, with LaneInput::clip, the survivors' planes (makePlanes()'s double
+/// arithmetic lane by lane, bit for bit), a vector of survivors at once. Takes the triangles whose
+/// vertices are all in front of the near plane and in the guard band and whose snapped box spans
+/// under kLaneExtent grid units each way (so that every edge product fits 32 bits); leaves the
+/// others to the scalar path.
 using LaneSetupFn = void (*)(const LaneInput& in, std::size_t first, std::size_t end,
                              LaneChunk& out);
 

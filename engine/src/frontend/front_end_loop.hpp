@@ -72,13 +72,13 @@ inline void planeBase(const glm::dvec2 (&s)[3], float W, float H, int& baseX, in
     baseY = floorClamped(std::min({s[0].y, s[1].y, s[2].y}), H - 1.0);
 }
 
-/// Runs the front end over triangles [first, end) of `job` and calls emit(triangle, planes)
-/// (a SnappedTriangle with a non-empty box, and the planes of the whole triangle, unclipped by
-/// the guard band) for each part that covers pixels; returns the sum of what `emit` returned.
-/// Adds its counters to `stats`. drawTriangles() is this with a rasterizer as `emit`.
-/// With job.lanes (and job.screen), chunks of triangles first take the lanes stage, which
-/// settles most of them a vector at a time; the loop then visits only its survivors and the
-/// triangles it leaves to the scalar stages below, in submission order, so the triangles
+/// Runs the front end over triangles [first, end) of `job` and calls emit(setup, planes)
+/// (the coverage setup of a snapped triangle with a non-empty box, edgesOf(), and the planes of
+/// the whole triangle, unclipped by the guard band) for each part that covers pixels; returns the
+/// sum of what `emit` returned. Adds its counters to `stats`. drawTriangles() is this with a
+/// rasterizer as `emit`. With job.lanes (and job.screen), chunks of triangles first take the lanes
+/// stage, which settles most of them a vector at a time; the loop then visits only its survivors
+/// and the triangles it leaves to the scalar stages below, in submission order, so the triangles
 /// emitted and the counters are the same either way.
 template <class Emit>
 std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emit&& emit,
@@ -94,19 +94,20 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
     const std::size_t nv = in.clip.size();
     const int count = layout.count();
     Planes planes;
+    CoverageSetup setup;
     std::size_t fragments = 0;
     end = std::min(end, in.indices.size() / 3);
 
     auto fetch = [&](const std::uint32_t(&idx)[3], ClipVertex(&v)[3]) {
         for (int j = 0; j < 3; ++j) v[j] = fetchVertex(in, layout, idx[j]);
     };
-    // 5. Planes of a triangle in the guard band that covers a pixel centre, then emit.
-    auto planesAndEmit = [&](const SnappedTriangle& tri, const ClipVertex(&v)[3]) {
+    // 5. Planes of a triangle in the guard band that covers a pixel centre, then emit `setup`.
+    auto planesAndEmit = [&](const ClipVertex(&v)[3]) {
         glm::dvec2 s[3];
         for (int j = 0; j < 3; ++j) s[j] = screenPosition(v[j].pos);
         int baseX = 0, baseY = 0;
         planeBase(s, space.W, space.H, baseX, baseY);
-        if (makePlanes(s, v, count, baseX, baseY, planes)) fragments += emit(tri, planes);
+        if (makePlanes(s, v, count, baseX, baseY, planes)) fragments += emit(setup, planes);
     };
 
     // The scalar stages, one triangle.
@@ -145,7 +146,8 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                 }
                 drawn = true;
                 if (tri.box.empty() || (sampleReach == 0 && coversNoCentre(tri))) return;
-                planesAndEmit(tri, vertices());
+                edgesOf(tri, setup);
+                planesAndEmit(vertices());
                 return;
             }
             // Beyond the guard band: 5. planes of the whole triangle, 4. cull, then the screen
@@ -169,7 +171,9 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                          sampleReach) == Facing::Degenerate)
                     continue;
                 drawn = true;
-                if (!tri.box.empty()) fragments += emit(tri, planes);
+                if (tri.box.empty()) continue;
+                edgesOf(tri, setup);
+                fragments += emit(setup, planes);
             }
         };
 
@@ -215,17 +219,19 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
         return fragments;
     }
 
-    const LaneInput lanes{in.indices.data(), nv,      screen, job.width, job.height,
-                          job.sampleReach,   job.cull};
+    const LaneInput lanes{in.indices.data(), nv,       screen,        job.width, job.height,
+                          job.sampleReach,   job.cull, in.clip.data()};
     LaneChunk chunk;
     for (std::size_t c = first; c < end; c += LaneChunk::kSize) {
         job.lanes(lanes, c, std::min(end, c + LaneChunk::kSize), chunk);
         stats.trianglesIn += chunk.trianglesIn;
         stats.trianglesCulled += chunk.trianglesCulled;
         stats.trianglesRasterized += chunk.trianglesRasterized;
+        std::uint32_t survivor = 0;  // survivors before entry e (LaneChunk::planes)
         for (std::uint32_t e = 0; e < chunk.count; ++e) {
-            // The clip positions of a triangle a few entries ahead (see kPrefetch).
-            if (e + kPrefetch / 2 < chunk.count) {
+            // The clip positions of a triangle a few entries ahead (see kPrefetch); not needed
+            // when the lanes built the planes (they read the clip positions already).
+            if (!chunk.planes && e + kPrefetch / 2 < chunk.count) {
                 const std::size_t ahead =
                     3 * (c + (chunk.at[e + kPrefetch / 2] & ~LaneChunk::kScalar));
                 for (std::size_t j = ahead; j < ahead + 3; ++j)
@@ -237,17 +243,37 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
                 triangle(t);
                 continue;
             }
-            SnappedTriangle tri;
-            for (int j = 0; j < 3; ++j) {
-                tri.x[j] = chunk.x[j][k];
-                tri.y[j] = chunk.y[j][k];
+            // The coverage setup as edgesOf() gives it: the lanes' edges, the steps from the
+            // snapped vertices.
+            for (int i = 0; i < 3; ++i) {
+                const int m = (i + 1) % 3;
+                setup.e0[i] = chunk.e0[i][k];
+                setup.stepX[i] = -std::int64_t{chunk.y[m][k] - chunk.y[i][k]} * kSubPixel;
+                setup.stepY[i] = std::int64_t{chunk.x[m][k] - chunk.x[i][k]} * kSubPixel;
             }
-            tri.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
-            tri.area2 = chunk.area2[k];
+            setup.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
+            setup.area2 = chunk.area2[k];
             const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
-            ClipVertex v[3];
-            fetch(idx, v);
-            planesAndEmit(tri, v);
+            if (!chunk.planes) {
+                ClipVertex v[3];
+                fetch(idx, v);
+                planesAndEmit(v);
+                continue;
+            }
+            // 5. Planes built by the lanes; only the varyings are fetched here.
+            const std::uint32_t j = survivor++;
+            if (chunk.base[0][j] < 0) continue;  // degenerate in double: makePlanes() fails
+            planes.baseX = chunk.base[0][j];
+            planes.baseY = chunk.base[1][j];
+            float* const to[5] = {planes.l1, planes.l2, planes.u1, planes.u2, planes.q};
+            for (int i = 0; i < 5; ++i)
+                for (int m = 0; m < 3; ++m) to[i][m] = chunk.plane[3 * i + m][j];
+            if (count > 0) {
+                float a[3][kMaxVaryings];
+                for (int m = 0; m < 3; ++m) fetchVaryings(in, layout, idx[m], a[m]);
+                setVaryingPlanes(a[0], a[1], a[2], count, planes);
+            }
+            fragments += emit(setup, planes);
         }
     }
     return fragments;

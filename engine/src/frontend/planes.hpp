@@ -41,6 +41,17 @@ inline void setPlane(float (&dst)[3], double c, double a, double b) {
     dst[2] = static_cast<float>(b);
 }
 
+/// The varyings' part of the planes: a0, d1 and d2 of the first `count` varyings of vertices
+/// with packed varyings a0, a1 and a2.
+inline void setVaryingPlanes(const float* a0, const float* a1, const float* a2, int count,
+                             Planes& p) {
+    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
+        p.a0[k] = a0[k];
+        p.d1[k] = a1[k] - a0[k];
+        p.d2[k] = a2[k] - a0[k];
+    }
+}
+
 /// Builds the planes of screen triangle `s` (vertices `v`, `count` varyings) relative to pixel
 /// (baseX, baseY); returns false for a degenerate triangle.
 inline bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int count, int baseX,
@@ -63,11 +74,7 @@ inline bool makePlanes(const glm::dvec2 (&s)[3], const ClipVertex (&v)[3], int c
     setPlane(p.u2, l2 * r2, l2x * r2, l2y * r2);
     setPlane(p.q, r0 + l1 * (r1 - r0) + l2 * (r2 - r0), l1x * (r1 - r0) + l2x * (r2 - r0),
              l1y * (r1 - r0) + l2y * (r2 - r0));
-    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
-        p.a0[k] = v[0].a[k];
-        p.d1[k] = v[1].a[k] - v[0].a[k];
-        p.d2[k] = v[2].a[k] - v[0].a[k];
-    }
+    setVaryingPlanes(v[0].a.data(), v[1].a.data(), v[2].a.data(), count, p);
     return true;
 }
 

@@ -151,31 +151,35 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
         const VecI cy = hn::ShiftLeft<kSubPixelBits>(by0);
         const VecI xs[3] = {hn::Sub(x0, cx), hn::Sub(x1, cx), hn::Sub(x2, cx)};
         const VecI ys[3] = {hn::Sub(y0, cy), hn::Sub(y1, cy), hn::Sub(y2, cy)};
+        // edgesOf(): each edge at the box's first pixel centre, top-left bias included, in 32
+        // bits (exact for boxes under kLaneExtent).
+        const VecI one = hn::Set(d, 1);
+        const VecI half = hn::Set(d, static_cast<std::int32_t>(kSubPixel / 2));
+        VecI edges[3];
+        VecI c00 = zero, c10 = zero, c01 = zero, c11 = zero;  // OR of the edges at each centre
+        for (int i = 0; i < 3; ++i) {
+            const int j = (i + 1) % 3;
+            const VecI dx = hn::Sub(xs[j], xs[i]), dy = hn::Sub(ys[j], ys[i]);
+            const MaskI topLeft =
+                hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
+            const VecI e = hn::Sub(
+                hn::Sub(hn::Mul(dx, hn::Sub(half, ys[i])), hn::Mul(dy, hn::Sub(half, xs[i]))),
+                hn::IfThenZeroElse(topLeft, one));
+            edges[i] = e;
+            const VecI stepX = hn::Neg(hn::ShiftLeft<kSubPixelBits>(dy));
+            const VecI stepY = hn::ShiftLeft<kSubPixelBits>(dx);
+            c00 = hn::Or(c00, e);
+            c10 = hn::Or(c10, hn::Add(e, stepX));
+            c01 = hn::Or(c01, hn::Add(e, stepY));
+            c11 = hn::Or(c11, hn::Add(hn::Add(e, stepX), stepY));
+        }
         if (in.sampleReach == 0) {
             // coversNoCentre(): boxes of at most 2×2 pixels whose centres the edge functions
-            // (edgesOf(), top-left bias included) all leave out end here.
-            const VecI one = hn::Set(d, 1);
+            // all leave out end here.
             const MaskI wide = hn::Eq(hn::Sub(bx1, bx0), one);
             const MaskI tall = hn::Eq(hn::Sub(by1, by0), one);
             const MaskI small = hn::And(hn::Lt(hn::Sub(bx1, bx0), hn::Set(d, 2)),
                                         hn::Lt(hn::Sub(by1, by0), hn::Set(d, 2)));
-            const VecI half = hn::Set(d, static_cast<std::int32_t>(kSubPixel / 2));
-            VecI c00 = zero, c10 = zero, c01 = zero, c11 = zero;  // OR of the edges at each centre
-            for (int i = 0; i < 3; ++i) {
-                const int j = (i + 1) % 3;
-                const VecI dx = hn::Sub(xs[j], xs[i]), dy = hn::Sub(ys[j], ys[i]);
-                const MaskI topLeft =
-                    hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
-                const VecI e = hn::Sub(
-                    hn::Sub(hn::Mul(dx, hn::Sub(half, ys[i])), hn::Mul(dy, hn::Sub(half, xs[i]))),
-                    hn::IfThenZeroElse(topLeft, one));
-                const VecI stepX = hn::Neg(hn::ShiftLeft<kSubPixelBits>(dy));
-                const VecI stepY = hn::ShiftLeft<kSubPixelBits>(dx);
-                c00 = hn::Or(c00, e);
-                c10 = hn::Or(c10, hn::Add(e, stepX));
-                c01 = hn::Or(c01, hn::Add(e, stepY));
-                c11 = hn::Or(c11, hn::Add(hn::Add(e, stepX), stepY));
-            }
             const MaskI covered = hn::Or(
                 hn::Or(hn::Not(hn::Lt(c00, zero)), hn::And(wide, hn::Not(hn::Lt(c10, zero)))),
                 hn::Or(hn::And(tall, hn::Not(hn::Lt(c01, zero))),
@@ -197,6 +201,7 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
             hn::StoreU(bx1, d, out.box[2] + at);
             hn::StoreU(by1, d, out.box[3] + at);
             hn::StoreU(area, d, out.area2 + at);
+            for (int i = 0; i < 3; ++i) hn::StoreU(edges[i], d, out.e0[i] + at);
         }
     }
 
@@ -216,16 +221,112 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
     out.count = count;
 }
 
+using Dd = hn::ScalableTag<double>;
+using Df = hn::Rebind<float, Dd>;
+using Dw = hn::Rebind<std::int32_t, Dd>;
+using VecD = hn::Vec<Dd>;
+
+/// Clip positions a survivor's gather may index: vertex i's floats start at 4i in 32 bits.
+constexpr std::size_t kPlaneVertices = std::size_t{1} << 29;
+
+/// The planes of the chunk's survivors (those of out.at without kScalar, in that order), a
+/// vector of survivors at once: makePlanes() after screenPosition() and planeBase(), the same
+/// double operations in the same order in every lane (no fused multiply-add: the engine is built
+/// with -ffp-contract=off, and Highway's Mul and Add round each), so every float is the scalar
+/// path's bit for bit.
+HWY_INLINE void planesOf(const LaneInput& in, std::size_t chunk, LaneChunk& out) {
+    const Dd dd;
+    const Df df;
+    const Dw dw;
+    const std::size_t n = hn::Lanes(dd);
+    std::int32_t which[LaneChunk::kSize + LaneChunk::kSlack];
+    std::size_t survivors = 0;
+    for (std::uint32_t e = 0; e < out.count; ++e)
+        if ((out.at[e] & LaneChunk::kScalar) == 0)
+            which[survivors++] = static_cast<std::int32_t>(out.at[e]);
+    if (survivors == 0) return;
+    // A tail's missing lanes take the first survivor again (valid indices), stored past the end.
+    for (std::size_t i = survivors; i < survivors + n; ++i) which[i] = which[0];
+
+    const auto* indices = reinterpret_cast<const std::int32_t*>(in.indices + 3 * chunk);
+    const float* clip = &in.clip[0].x;
+    const VecD zero = hn::Zero(dd), one = hn::Set(dd, 1.0), half = hn::Set(dd, 0.5);
+    const VecD hiX = hn::Set(dd, in.width - 1.0), hiY = hn::Set(dd, in.height - 1.0);
+    for (std::size_t g = 0; g < survivors; g += n) {
+        const auto k3 = hn::Mul(hn::LoadU(dw, which + g), hn::Set(dw, 3));
+        VecD sx[3], sy[3], r[3];
+        for (int j = 0; j < 3; ++j) {
+            const auto v4 =
+                hn::ShiftLeft<2>(hn::GatherIndex(dw, indices, hn::Add(k3, hn::Set(dw, j))));
+            const VecD x = hn::PromoteTo(dd, hn::GatherIndex(df, clip, v4));
+            const VecD y = hn::PromoteTo(dd, hn::GatherIndex(df, clip + 1, v4));
+            const VecD w = hn::PromoteTo(dd, hn::GatherIndex(df, clip + 3, v4));
+            sx[j] = hn::Div(x, w);  // screenPosition()
+            sy[j] = hn::Div(y, w);
+            r[j] = hn::Div(one, w);
+        }
+        // planeBase(): floorClamped() of the least x and y (finite here: the vertices are in
+        // the guard band); truncation is the floor for values ≥ 0.
+        const VecD minX = hn::Min(hn::Min(sx[0], sx[1]), sx[2]);
+        const VecD minY = hn::Min(hn::Min(sy[0], sy[1]), sy[2]);
+        const VecD baseX = hn::Min(hn::Max(minX, zero), hiX);
+        const VecD baseY = hn::Min(hn::Max(minY, zero), hiY);
+        const auto bxi = hn::DemoteTo(dw, baseX), byi = hn::DemoteTo(dw, baseY);
+        const VecD bx = hn::Add(hn::PromoteTo(dd, bxi), half);
+        const VecD by = hn::Add(hn::PromoteTo(dd, byi), half);
+
+        // makePlanes().
+        const VecD area = hn::Sub(hn::Mul(hn::Sub(sx[1], sx[0]), hn::Sub(sy[2], sy[0])),
+                                  hn::Mul(hn::Sub(sy[1], sy[0]), hn::Sub(sx[2], sx[0])));
+        const auto usable = hn::And(hn::Ne(area, zero), hn::IsFinite(area));
+        const VecD l1 = hn::Div(hn::Sub(hn::Mul(hn::Sub(sx[0], sx[2]), hn::Sub(by, sy[2])),
+                                        hn::Mul(hn::Sub(sy[0], sy[2]), hn::Sub(bx, sx[2]))),
+                                area);
+        const VecD l2 = hn::Div(hn::Sub(hn::Mul(hn::Sub(sx[1], sx[0]), hn::Sub(by, sy[0])),
+                                        hn::Mul(hn::Sub(sy[1], sy[0]), hn::Sub(bx, sx[0]))),
+                                area);
+        const VecD l1x = hn::Div(hn::Neg(hn::Sub(sy[0], sy[2])), area);
+        const VecD l1y = hn::Div(hn::Sub(sx[0], sx[2]), area);
+        const VecD l2x = hn::Div(hn::Neg(hn::Sub(sy[1], sy[0])), area);
+        const VecD l2y = hn::Div(hn::Sub(sx[1], sx[0]), area);
+        const VecD d1 = hn::Sub(r[1], r[0]), d2 = hn::Sub(r[2], r[0]);
+        const VecD planes[15] = {l1,
+                                 l1x,
+                                 l1y,
+                                 l2,
+                                 l2x,
+                                 l2y,
+                                 hn::Mul(l1, r[1]),
+                                 hn::Mul(l1x, r[1]),
+                                 hn::Mul(l1y, r[1]),
+                                 hn::Mul(l2, r[2]),
+                                 hn::Mul(l2x, r[2]),
+                                 hn::Mul(l2y, r[2]),
+                                 hn::Add(hn::Add(r[0], hn::Mul(l1, d1)), hn::Mul(l2, d2)),
+                                 hn::Add(hn::Mul(l1x, d1), hn::Mul(l2x, d2)),
+                                 hn::Add(hn::Mul(l1y, d1), hn::Mul(l2y, d2))};
+        for (int i = 0; i < 15; ++i) hn::StoreU(hn::DemoteTo(df, planes[i]), df, out.plane[i] + g);
+        hn::StoreU(hn::DemoteTo(dw, hn::IfThenElse(usable, baseX, hn::Set(dd, -1.0))), dw,
+                   out.base[0] + g);
+        hn::StoreU(byi, dw, out.base[1] + g);
+    }
+}
+
 /// LaneSetupFn for this target.
 void setupLanes(const LaneInput& in, std::size_t first, std::size_t end, LaneChunk& out) {
     const std::size_t n = hn::Lanes(Di());
     out.count = 0;
     out.trianglesIn = out.trianglesCulled = out.trianglesRasterized = 0;
+    out.planes = false;
     // No clip positions: every index is invalid, and the gathers (of vertex 0 where invalid)
     // would read outside the vertex pass's output.
     if (in.vertices == 0) return;
     for (std::size_t t = first; t < end; t += n)
         setupVector(in, first, t, std::min(n, end - t), out);
+    if (in.clip != nullptr && in.vertices <= kPlaneVertices) {
+        planesOf(in, first, out);
+        out.planes = true;
+    }
 }
 
 }  // namespace
