@@ -131,7 +131,8 @@ TEST(DebugView, OverdrawCountsFragmentsPerPixel) {
     EXPECT_EQ(map.maxValue, 2.0f);
 }
 
-// Overdraw is the coverage count of the real draw (countCoverage, facet/advanced/draw.hpp) on a real mesh.
+// Overdraw is the coverage count of the real draw (countCoverage, facet/advanced/draw.hpp) on a
+// real mesh.
 TEST(DebugView, OverdrawIsTheDrawsCoverageOnAMesh) {
     facet::Result<Scene> loaded =
         facet::loadScene(std::string(FACET_ASSETS_DIR) + "/default.scene");
