@@ -1,5 +1,6 @@
 # Install rules: the two libraries, their headers, the CMake package (find_package(facet) gives
-# facet::engine and facet::evaluation) and a pkg-config file (pkg-config --cflags --libs facet).
+# facet::engine and facet::evaluation) and a pkg-config file for each (pkg-config --cflags --libs
+# facet, or facet-evaluation for both).
 # docs/library.md shows each way of using them; scripts/check-install.sh tries each.
 include(CMakePackageConfigHelpers)
 
@@ -18,8 +19,12 @@ install(TARGETS facet_engine facet_evaluation facet_glm facet_options facet_warn
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# Both libraries' headers under one include/facet/: the engine's, the generated version.hpp, and
+# the evaluation library's facet/evaluation/. The advanced headers (facet/advanced/) are installed
+# with the engine's: the unstable API the accuracy tools use (docs/library.md).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/include/facet
                   ${PROJECT_BINARY_DIR}/generated/include/facet
+                  ${PROJECT_SOURCE_DIR}/evaluation/include/facet
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT facetTargets NAMESPACE facet:: DESTINATION ${FACET_CMAKE_DIR})
 
@@ -39,9 +44,13 @@ set(FACET_PC_OPENMP_LIBS "${OpenMP_CXX_FLAGS}")
 # works for any P.
 file(RELATIVE_PATH FACET_PC_TO_PREFIX "/p/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/p")
 string(REGEX REPLACE "/$" "" FACET_PC_TO_PREFIX "${FACET_PC_TO_PREFIX}")
+# facet.pc is the engine; facet-evaluation.pc the evaluation library, which requires it.
 configure_file(${PROJECT_SOURCE_DIR}/cmake/facet.pc.in ${PROJECT_BINARY_DIR}/generated/facet.pc
                @ONLY)
+configure_file(${PROJECT_SOURCE_DIR}/cmake/facet-evaluation.pc.in
+               ${PROJECT_BINARY_DIR}/generated/facet-evaluation.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/generated/facet.pc
+              ${PROJECT_BINARY_DIR}/generated/facet-evaluation.pc
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/THIRD_PARTY_NOTICES

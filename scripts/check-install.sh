@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # The library as a user gets it (docs/library.md): installs facet into a temporary prefix, builds
 # examples/ there as an outside CMake project with find_package(facet), runs each example, and
-# links a one-file program with `pkg-config --cflags --libs facet`; then consumes the source tree
-# as a subproject (FetchContent from the folder, built and run; FetchContent from a file:// git
-# URL of the clone and add_subdirectory, configured), checking that only the engine is built: no
-# GoogleTest, GLFW, ImGui, epoxy or CLI11 looked for, and the parent's build type left alone.
+# links a one-file program with `pkg-config --cflags --libs facet` (the engine alone) and one with
+# `facet-evaluation`; checks that the engine's archive needs nothing of the evaluation library's
+# and that examples/ uses no advanced (unstable) header; then consumes the source tree as a
+# subproject (FetchContent from the folder, a program on facet::engine and one on
+# facet::evaluation built and run; FetchContent from a file:// git URL of the clone and
+# add_subdirectory, configured), checking that only the libraries are built: no GoogleTest,
+# GLFW, ImGui, epoxy or CLI11 looked for, and the parent's build type left alone.
 # Exits non-zero on the first failure; everything it makes is in a temporary folder, removed
 # afterwards.
 #
@@ -33,7 +36,25 @@ fi
 echo "== install into a temporary prefix"
 cmake --install "$build" --prefix "$prefix" >/dev/null
 test -f "$prefix/include/facet/version.hpp"
+test -f "$prefix/include/facet/evaluation/image_diff.hpp"
+test -f "$prefix/include/facet/advanced/draw.hpp"
 test -n "$(find "$prefix" -name facetConfig.cmake)"
+# The engine does not depend on the evaluation library: nothing the engine's archive needs is
+# defined there (strong definitions only; inline functions both use are weak in each).
+libdir="$(dirname "$(find "$prefix" -name libfacet_engine.a | head -n 1)")"
+nm --undefined-only "$libdir/libfacet_engine.a" | awk 'NF == 2 {print $2}' | sort -u >"$work/engine-needs.txt"
+nm --defined-only --extern-only "$libdir/libfacet_evaluation.a" |
+  awk 'NF == 3 && $2 ~ /^[TDBR]$/ {print $3}' | sort -u >"$work/evaluation-has.txt"
+if [[ -n "$(comm -12 "$work/engine-needs.txt" "$work/evaluation-has.txt")" ]]; then
+  echo "the engine library needs symbols of the evaluation library:" >&2
+  comm -12 "$work/engine-needs.txt" "$work/evaluation-has.txt" | c++filt >&2
+  exit 1
+fi
+# The examples are what users copy: the stable API only, no advanced (unstable) header.
+if grep -rn 'facet/advanced/' "$src/examples"; then
+  echo "examples/ uses the advanced API (facet/advanced/), which is not stable" >&2
+  exit 1
+fi
 
 echo "== examples/ as an outside project: find_package(facet)"
 cmake -S "$src/examples" -B "$work/examples" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
@@ -81,7 +102,39 @@ export PKG_CONFIG_PATH="$(dirname "$(find "$prefix" -name facet.pc | head -n 1)"
 # shellcheck disable=SC2046 # pkg-config's output is meant to split into words
 "${CXX:-c++}" -std=c++20 -O1 "$work/one_file.cpp" -o "$work/one_file" $(pkg-config --cflags --libs facet)
 "$work/one_file"
-echo "== the installed library works: $(pkg-config --modversion facet)"
+# The evaluation library through its own facet-evaluation.pc (which requires facet.pc).
+cat >"$work/one_file_evaluation.cpp" <<'CPP'
+#include <cstdio>
+
+#include "facet/evaluation/image_diff.hpp"
+#include "facet/render.hpp"
+
+int main() {
+    facet::Scene scene;  // an empty mesh: frames of background
+    scene.camera.width = 32;
+    scene.camera.height = 24;
+    facet::Renderer renderer;
+    facet::Framebuffer a, b;
+    facet::RenderSettings black;
+    black.background = 0x000000;
+    facet::RenderSettings white;
+    white.background = 0xffffff;
+    if (!renderer.render(scene, black, a) || !renderer.render(scene, white, b)) return 1;
+    const facet::ImageDiff same = facet::diffImages(a, a);
+    const facet::ImageDiff apart = facet::diffImages(a, b);
+    std::printf("evaluation: %zu and %zu of %zu pixels differ\n", same.pixelsDiffering,
+                apart.pixelsDiffering, apart.pixels);
+    return same.pixelsDiffering == 0 && apart.pixelsDiffering == 32u * 24u &&
+                   apart.maxError == 255
+               ? 0
+               : 1;
+}
+CPP
+# shellcheck disable=SC2046 # pkg-config's output is meant to split into words
+"${CXX:-c++}" -std=c++20 -O1 "$work/one_file_evaluation.cpp" -o "$work/one_file_evaluation" \
+  $(pkg-config --cflags --libs facet-evaluation)
+"$work/one_file_evaluation"
+echo "== the installed libraries work: $(pkg-config --modversion facet facet-evaluation | paste -sd' ')"
 
 echo "== facet as a subproject: FetchContent and add_subdirectory, the engine alone"
 mkdir -p "$work/consumer"
@@ -104,7 +157,10 @@ else()
 endif()
 add_executable(consumer main.cpp)
 target_link_libraries(consumer PRIVATE facet::engine)
+add_executable(consumer_evaluation evaluation.cpp)
+target_link_libraries(consumer_evaluation PRIVATE facet::evaluation)
 CMAKE
+cp "$work/one_file_evaluation.cpp" "$work/consumer/evaluation.cpp"
 cat >"$work/consumer/main.cpp" <<'CPP'
 #include <cstdio>
 
@@ -144,6 +200,7 @@ cmake -S "$work/consumer" -B "$work/fetch" "${generator[@]}" -DFACET_SOURCE="$sr
 only_the_engine "$work/fetch" ""
 cmake --build "$work/fetch"
 "$work/fetch/consumer" "$src/assets/default.scene" "$work/consumer.png"
+"$work/fetch/consumer_evaluation"
 # add_subdirectory, Debug: configured (the same engine build as above).
 cmake -S "$work/consumer" -B "$work/subdirectory" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug \
   -DFACET_SOURCE="$src" -DFACET_AS_SUBDIRECTORY=ON >/dev/null

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
@@ -45,7 +46,8 @@ double zFightingShare(double d, double delta) {
     Framebuffer fb;
     fb.resize(w, h);
     fb.clear(rgbaFromHex(s.background));
-    renderer.draw({.clip = clip, .colors = colors, .indices = idx, .nearPlane = 1e-3f}, s, fb);
+    facet::draw(renderer, {.clip = clip, .colors = colors, .indices = idx, .nearPlane = 1e-3f}, s,
+                fb);
     const std::uint32_t green = packRgba(0, 255, 0), red = packRgba(255, 0, 0);
     std::size_t covered = 0, fighting = 0;
     for (std::uint32_t c : fb.color) {

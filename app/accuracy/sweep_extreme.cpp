@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
@@ -243,7 +244,7 @@ ExtremePoint measure(const Case& c, int step, int w, int h, int frames, Renderer
     for (int f = 0; f <= std::max(1, frames); ++f) {
         fb.clear(background);
         const Clock::time_point t0 = Clock::now();
-        if (Result<RenderStats> r = renderer.draw(input, s, fb)) stats = r.value();
+        if (Result<RenderStats> r = facet::draw(renderer, input, s, fb)) stats = r.value();
         const double t = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
         if (f > 0) us.push_back(t);
     }

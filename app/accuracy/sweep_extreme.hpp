@@ -1,6 +1,6 @@
 #pragma once
 // Stability sweep "extreme": single triangles at the limits the rasterizer must survive (issue 6),
-// drawn by the fast path (Renderer::draw, clip-space input) and by the double-precision
+// drawn by the fast path (the advanced draw(), clip-space input) and by the double-precision
 // reference from the same floats. Per case: the time per draw, what each covered, where they
 // disagree outside the reference's ambiguity mask (must be nowhere) and NaN depth (never).
 

@@ -15,6 +15,7 @@
 #include <glm/vec4.hpp>
 
 #include "accuracy_methods.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
@@ -148,9 +149,9 @@ Counts countLayers(Renderer& renderer, const Scene& scene, const std::vector<glm
                        .nearPlane = static_cast<float>(resolveNearPlane(s, *scene.mesh))};
     Counts c;
     const Camera& cam = scene.camera;
-    renderer.countCoverage(in, s, cam.width, cam.height, c.all);
+    facet::countCoverage(renderer, in, s, cam.width, cam.height, c.all);
     s.cullBackFaces = true;
-    renderer.countCoverage(in, s, cam.width, cam.height, c.front);
+    facet::countCoverage(renderer, in, s, cam.width, cam.height, c.front);
     return c;
 }
 

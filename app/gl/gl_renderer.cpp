@@ -16,9 +16,9 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "facet/advanced/fast_lighting.hpp"
 #include "facet/camera.hpp"
 #include "facet/legend.hpp"
-#include "facet/lighting.hpp"
 #include "facet/mesh.hpp"
 #include "facet/multisample.hpp"
 #include "facet/normals.hpp"

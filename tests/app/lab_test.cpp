@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/reference.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
@@ -203,7 +204,7 @@ TEST(LabRasterizer, CoursesInsideTestDrawsASharedEdgeTwiceWhereFacetDrawsItOnce)
     in.indices = idx;
     facet::Renderer engine;
     std::vector<std::uint16_t> facetCount;
-    engine.countCoverage(in, facet::RenderSettings{}, 16, 16, facetCount);
+    facet::countCoverage(engine, in, facet::RenderSettings{}, 16, 16, facetCount);
 
     // The diagonal: both triangles' edge, drawn twice by the lab, once by facet. The square's
     // right and bottom sides also run through pixel centres: the top-left rule leaves them to

@@ -33,6 +33,7 @@
 #include "accuracy/sweep_depth.hpp"
 #include "accuracy/sweep_highlights.hpp"
 #include "accuracy/sweep_view_angle.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/reference_compare.hpp"
 #include "facet/framebuffer.hpp"
@@ -77,8 +78,8 @@ CoverageCheck checkCoverage(const std::vector<glm::vec4>& clip,
     RenderSettings settings;
     std::vector<std::uint16_t> counts;
     Clock::time_point t0 = Clock::now();
-    renderer.countCoverage({.clip = clip, .indices = indices, .nearPlane = nearPlane}, settings, w,
-                           h, counts);
+    facet::countCoverage(renderer, {.clip = clip, .indices = indices, .nearPlane = nearPlane},
+                         settings, w, h, counts);
     c.fastMs = msSince(t0);
     // The reference sees exactly the floats the fast path sees, so any difference is the
     // rasterizer's, not the input's rounding.
@@ -218,19 +219,21 @@ TEST(ExtremeTriangles, NonFiniteClipCoordinatesCoverNothingAndSpareTheRest) {
     Renderer renderer;
     RenderSettings settings;
     std::vector<std::uint16_t> alone, counts;
-    renderer.countCoverage({.clip = good, .indices = std::vector<std::uint32_t>{0, 1, 2}}, settings,
-                           w, h, alone);
+    facet::countCoverage(renderer, {.clip = good, .indices = std::vector<std::uint32_t>{0, 1, 2}},
+                         settings, w, h, alone);
     // clip.z is never read (depth is 1/(interpolated 1/w)): a NaN there leaves a well-defined
     // position, and the triangle draws exactly as with a finite z.
     {
         const std::vector<glm::vec4> nanZ = {{5, 5, kNaN, 1}, good[1], good[2]};
-        renderer.countCoverage({.clip = nanZ, .indices = std::vector<std::uint32_t>{0, 1, 2}},
-                               settings, w, h, counts);
+        facet::countCoverage(renderer,
+                             {.clip = nanZ, .indices = std::vector<std::uint32_t>{0, 1, 2}},
+                             settings, w, h, counts);
         std::vector<glm::vec4> finiteZ = nanZ;
         finiteZ[0].z = 1.0f;
         std::vector<std::uint16_t> expected;
-        renderer.countCoverage({.clip = finiteZ, .indices = std::vector<std::uint32_t>{0, 1, 2}},
-                               settings, w, h, expected);
+        facet::countCoverage(renderer,
+                             {.clip = finiteZ, .indices = std::vector<std::uint32_t>{0, 1, 2}},
+                             settings, w, h, expected);
         EXPECT_EQ(counts, expected);
     }
     for (std::size_t k = 0; k < bad.size(); ++k) {
@@ -242,7 +245,7 @@ TEST(ExtremeTriangles, NonFiniteClipCoordinatesCoverNothingAndSpareTheRest) {
             idx[static_cast<std::size_t>(position)] = 0;
             idx.insert(idx.end(), {1, 2, 3});
             const Clock::time_point t0 = Clock::now();
-            renderer.countCoverage({.clip = clip, .indices = idx}, settings, w, h, counts);
+            facet::countCoverage(renderer, {.clip = clip, .indices = idx}, settings, w, h, counts);
             EXPECT_LT(msSince(t0), kCaseBudgetMs);
             EXPECT_EQ(counts, alone)
                 << "bad vertex " << k << " (" << bad[k].x << "," << bad[k].y << "," << bad[k].z
@@ -254,7 +257,7 @@ TEST(ExtremeTriangles, NonFiniteClipCoordinatesCoverNothingAndSpareTheRest) {
                 Framebuffer fb;
                 fb.resize(w, h);
                 fb.clear(rgbaFromHex(s.background));
-                renderer.draw({.clip = clip, .indices = idx}, s, fb);
+                facet::draw(renderer, {.clip = clip, .indices = idx}, s, fb);
                 for (float d : fb.depth) ASSERT_FALSE(std::isnan(d)) << "bad vertex " << k;
             }
         }

@@ -19,6 +19,7 @@
 
 #include "accuracy/sweep_subpixel.hpp"
 #include "coverage/coverage.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
@@ -132,7 +133,7 @@ TEST(SubPixelBits, CoverageIsExactOnItsGrid) {
             RenderSettings s;
             s.subPixelBits = bits;
             std::vector<std::uint16_t> counts;
-            renderer.countCoverage({.clip = clip, .indices = indices}, s, kW, kH, counts);
+            facet::countCoverage(renderer, {.clip = clip, .indices = indices}, s, kW, kH, counts);
 
             std::vector<glm::dvec4> exact, rounded;
             for (const glm::vec4& c : clip) {
@@ -183,9 +184,9 @@ TEST(SubPixelBits, SphereHasNoCracksOrDoubleDrawingAtFourBits) {
         s.subPixelBits = bits;
         std::vector<std::uint16_t> all, front;
         const DrawInput in{.clip = clip, .indices = scene.mesh->indices, .nearPlane = 1e-3f};
-        renderer.countCoverage(in, s, scene.camera.width, scene.camera.height, all);
+        facet::countCoverage(renderer, in, s, scene.camera.width, scene.camera.height, all);
         s.cullBackFaces = true;
-        renderer.countCoverage(in, s, scene.camera.width, scene.camera.height, front);
+        facet::countCoverage(renderer, in, s, scene.camera.width, scene.camera.height, front);
         std::size_t inside = 0, wrong = 0, unbalanced = 0;
         for (std::size_t i = 0; i < all.size(); ++i) {
             inside += all[i] > 0 ? 1 : 0;
@@ -226,7 +227,7 @@ TEST(SubPixelBits, NonFiniteAndHugeInputsStaySafeAtCoarseGrids) {
         std::vector<std::uint16_t> counts;
         for (std::uint32_t t = 0; t < 5; ++t) {
             const std::vector<std::uint32_t> idx{3 * t, 3 * t + 1, 3 * t + 2};
-            renderer.countCoverage({.clip = clip, .indices = idx}, s, kW, kH, counts);
+            facet::countCoverage(renderer, {.clip = clip, .indices = idx}, s, kW, kH, counts);
             std::size_t covered = 0;
             for (const std::uint16_t c : counts) {
                 ASSERT_LE(c, 1) << "triangle " << t << " at " << bits << " bits";
@@ -245,7 +246,7 @@ TEST(SubPixelBits, NonFiniteAndHugeInputsStaySafeAtCoarseGrids) {
              {ShaderKind::Simple, ShaderKind::Painter, ShaderKind::Depth}) {
             s.shader = shader;
             const RenderStats stats =
-                renderer.draw({.clip = clip, .indices = all}, s, frame).value();
+                facet::draw(renderer, {.clip = clip, .indices = all}, s, frame).value();
             EXPECT_LE(stats.fragments, 2u * kW * kH);
         }
     }

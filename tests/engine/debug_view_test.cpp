@@ -13,6 +13,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/colormap.hpp"
 #include "facet/debug_view.hpp"
@@ -130,7 +131,8 @@ TEST(DebugView, OverdrawCountsFragmentsPerPixel) {
     EXPECT_EQ(map.maxValue, 2.0f);
 }
 
-// Overdraw is the coverage count of the real draw (Renderer::countCoverage) on a real mesh.
+// Overdraw is the coverage count of the real draw (countCoverage, facet/advanced/draw.hpp) on a
+// real mesh.
 TEST(DebugView, OverdrawIsTheDrawsCoverageOnAMesh) {
     facet::Result<Scene> loaded =
         facet::loadScene(std::string(FACET_ASSETS_DIR) + "/default.scene");
@@ -151,7 +153,7 @@ TEST(DebugView, OverdrawIsTheDrawsCoverageOnAMesh) {
                             .indices = mesh.indices,
                             .nearPlane = static_cast<float>(facet::resolveNearPlane(s, mesh))};
         std::vector<std::uint16_t> counts;
-        renderer.countCoverage(in, s, scene.camera.width, scene.camera.height, counts);
+        facet::countCoverage(renderer, in, s, scene.camera.width, scene.camera.height, counts);
         int drawn = 0;
         for (std::size_t i = 0; i < counts.size(); ++i) {
             if (counts[i] == 0) {

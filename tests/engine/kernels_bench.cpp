@@ -29,9 +29,10 @@
 #include <glm/vec4.hpp>
 
 #include "coverage/coverage.hpp"
+#include "facet/advanced/draw.hpp"
+#include "facet/advanced/fast_lighting.hpp"
 #include "facet/camera.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/lighting.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/settings.hpp"

@@ -13,7 +13,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "facet/lighting.hpp"
+#include "facet/advanced/fast_lighting.hpp"
 #include "facet/scene.hpp"
 #include "shading/fast_lighting.hpp"
 

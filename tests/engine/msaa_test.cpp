@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/ground_truth.hpp"
 #include "facet/evaluation/image_metrics.hpp"
@@ -83,7 +84,7 @@ void expectSamplesMatchReference(const Scene& scene, const RenderSettings& s,
     facet::Renderer renderer;
     Framebuffer frame;
     renderer.render(scene, s, frame);
-    const Framebuffer& samples = renderer.samples();
+    const Framebuffer& samples = facet::sampleBuffer(renderer);
     const facet::SampleBlock b = facet::sampleBlock(s.msaa);
     ASSERT_EQ(samples.width, scene.camera.width * b.x) << what;
     ASSERT_EQ(samples.height, scene.camera.height * b.y) << what;
@@ -162,7 +163,7 @@ TEST(Msaa, SamplesSitAtTheirPositionsWithTheTopLeftRule) {
     facet::DrawInput in;
     in.clip = clip;
     in.indices = mesh.indices;
-    renderer.countCoverage(in, s, 24, 16, counts);
+    facet::countCoverage(renderer, in, s, 24, 16, counts);
     ASSERT_EQ(counts.size(), 24u * 16u * 4u);
     const facet::SampleBlock b = facet::sampleBlock(4);
     const auto positions = facet::samplePositions(4);
@@ -283,7 +284,7 @@ TEST(Msaa, SharedEdgesCoverEverySampleOnce) {
             s.msaa = n;
             s.subPixelBits = bits;
             std::vector<std::uint16_t> counts;
-            renderer.countCoverage(in, s, w, h, counts);
+            facet::countCoverage(renderer, in, s, w, h, counts);
             ASSERT_EQ(counts.size(), static_cast<std::size_t>(w * h * n));
             std::size_t wrong = 0;
             for (const std::uint16_t c : counts) wrong += c != 1;
@@ -306,7 +307,7 @@ TEST(Msaa, ResolveIsTheRoundedMeanOfTheSamples) {
         facet::Renderer renderer;
         Framebuffer frame;
         renderer.render(scene, s, frame);
-        const Framebuffer& samples = renderer.samples();
+        const Framebuffer& samples = facet::sampleBuffer(renderer);
         const facet::SampleBlock b = facet::sampleBlock(n);
         int partial = 0;
         for (int y = 0; y < frame.height; ++y) {

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/procedural.hpp"
 #include "facet/reference.hpp"
@@ -34,7 +35,7 @@ std::vector<std::uint16_t> countScreen(const std::vector<glm::vec2>& pts, int w,
     RenderSettings s;
     s.cullBackFaces = cull;
     std::vector<std::uint16_t> counts;
-    r.countCoverage({.clip = clip, .indices = idx, .nearPlane = 0.5f}, s, w, h, counts);
+    facet::countCoverage(r, {.clip = clip, .indices = idx, .nearPlane = 0.5f}, s, w, h, counts);
     return counts;
 }
 
@@ -129,8 +130,8 @@ TEST_P(QuadGrid, AdditiveHalfGreyNeverExceedsHalfAndLeavesNoHole) {
                                          99u + static_cast<std::uint32_t>(seed), {64.0f, 48.0f});
         Renderer r;
         std::vector<std::uint16_t> counts;
-        r.countCoverage({.clip = t.clip, .indices = t.indices, .nearPlane = 0.05f},
-                        RenderSettings{}, 128, 96, counts);
+        facet::countCoverage(r, {.clip = t.clip, .indices = t.indices, .nearPlane = 0.05f},
+                             RenderSettings{}, 128, 96, counts);
         int holes = 0, doubles = 0;
         for (auto v : counts) {
             holes += v == 0;
@@ -169,8 +170,8 @@ TEST(FillRule, JitteredPlaneInPerspectiveCoversItsOutlineExactlyOnce) {
         const std::vector<glm::vec4> clip = test::clipPositions(cam, grid.positions);
         Renderer r;
         std::vector<std::uint16_t> counts;
-        r.countCoverage({.clip = clip, .indices = grid.indices, .nearPlane = 0.01f},
-                        RenderSettings{}, cam.width, cam.height, counts);
+        facet::countCoverage(r, {.clip = clip, .indices = grid.indices, .nearPlane = 0.01f},
+                             RenderSettings{}, cam.width, cam.height, counts);
 
         // The outline is the projected unit square; classify each centre against it in double.
         glm::dvec2 q[4];
@@ -211,9 +212,9 @@ void expectClosedSurfaceBalanced(const Mesh& mesh, const Camera& cam, const std:
     std::vector<std::uint16_t> all, front;
     RenderSettings s;
     const DrawInput in{.clip = clip, .indices = mesh.indices, .nearPlane = 0.001f};
-    r.countCoverage(in, s, cam.width, cam.height, all);
+    facet::countCoverage(r, in, s, cam.width, cam.height, all);
     s.cullBackFaces = true;
-    r.countCoverage(in, s, cam.width, cam.height, front);
+    facet::countCoverage(r, in, s, cam.width, cam.height, front);
     int covered = 0, unbalanced = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
         covered += front[i] > 0;

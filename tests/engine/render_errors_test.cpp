@@ -4,12 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "facet/advanced/draw.hpp"
+#include "facet/camera.hpp"
 #include "facet/debug_view.hpp"
 #include "facet/error.hpp"
 #include "facet/evaluation/ground_truth.hpp"
@@ -134,27 +137,27 @@ TEST(RenderErrors, DrawAndCountCoverageCheckTheirSizes) {
     const std::vector<std::uint32_t> indices = {0, 1, 2};
     const DrawInput input{.clip = clip, .indices = indices};
     Framebuffer empty;
-    const Result<RenderStats> none = renderer.draw(input, {}, empty);
+    const Result<RenderStats> none = facet::draw(renderer, input, {}, empty);
     ASSERT_FALSE(none);
     EXPECT_TRUE(has(none.error().what(), "0x0")) << none.error().what();
     // A frame whose planes do not match its size is refused, not overrun.
     Framebuffer lying;
     lying.width = 16;
     lying.height = 16;
-    const Result<RenderStats> wrong = renderer.draw(input, {}, lying);
+    const Result<RenderStats> wrong = facet::draw(renderer, input, {}, lying);
     ASSERT_FALSE(wrong);
     EXPECT_TRUE(has(wrong.error().what(), "Framebuffer::resize")) << wrong.error().what();
     Framebuffer frame;
     ASSERT_TRUE(frame.resize(16, 16));
     frame.clear(0);
-    EXPECT_TRUE(renderer.draw(input, {}, frame));
+    EXPECT_TRUE(facet::draw(renderer, input, {}, frame));
 
     std::vector<std::uint16_t> counts(3, 7);
-    const Status refused = renderer.countCoverage(input, {}, -10, 4, counts);
+    const Status refused = facet::countCoverage(renderer, input, {}, -10, 4, counts);
     ASSERT_FALSE(refused);
     EXPECT_TRUE(has(refused.error().what(), "-10x4"));
     EXPECT_EQ(counts.size(), 3u);  // untouched
-    EXPECT_TRUE(renderer.countCoverage(input, {}, 16, 16, counts));
+    EXPECT_TRUE(facet::countCoverage(renderer, input, {}, 16, 16, counts));
     EXPECT_EQ(counts.size(), 256u);
 }
 
@@ -232,4 +235,40 @@ TEST(RenderErrors, AReferenceWindowOutsideTheFrameIsAnError) {
         reference::renderWindow(scene, RenderSettings{}, {56, 40, 8, 8});
     ASSERT_TRUE(inside);
     EXPECT_EQ(inside->width, 8);
+}
+
+// The scaled window (the ground truth's supersampled render) checks the scene's own camera, the
+// scale and the window in the scaled image's pixels, and at scale n draws what renderWindow draws
+// for the camera resized n times.
+TEST(RenderErrors, AScaledReferenceWindowIsCheckedAndMatchesTheResizedCamera) {
+    const Scene scene = triangleScene();
+    const RenderSettings s;
+    const Result<reference::Image> below = reference::renderScaledWindow(scene, s, 0, {0, 0, 1, 1});
+    ASSERT_FALSE(below);
+    EXPECT_TRUE(has(below.error().what(), "scale 0 is below 1")) << below.error().what();
+    const Result<reference::Image> outside =
+        reference::renderScaledWindow(scene, s, 2, {120, 0, 16, 1});
+    ASSERT_FALSE(outside);
+    EXPECT_TRUE(has(outside.error().what(), "is not inside the 128x96 frame"))
+        << outside.error().what();
+    Scene bad = scene;
+    bad.camera.width = -10;
+    EXPECT_FALSE(reference::renderScaledWindow(bad, s, 2, {0, 0, 1, 1}));
+    Scene noMesh = scene;
+    noMesh.mesh = nullptr;
+    EXPECT_FALSE(reference::renderScaledWindow(noMesh, s, 2, {0, 0, 1, 1}));
+
+    const reference::Window window{40, 30, 48, 36};
+    const Result<reference::Image> scaled = reference::renderScaledWindow(scene, s, 2, window);
+    ASSERT_TRUE(scaled) << scaled.error().what();
+    Scene big = scene;
+    big.camera = resizedCamera(scene.camera, 128, 96);
+    const Result<reference::Image> resized = reference::renderWindow(big, s, window);
+    ASSERT_TRUE(resized);
+    EXPECT_GT(std::count_if(scaled->depth.begin(), scaled->depth.end(),
+                            [](double d) { return std::isfinite(d); }),
+              0);  // the triangle is in the window
+    EXPECT_EQ(scaled->color, resized->color);
+    EXPECT_EQ(scaled->depth, resized->depth);
+    EXPECT_EQ(scaled->ambiguous, resized->ambiguous);
 }

@@ -21,6 +21,7 @@
 #include <hwy/targets.h>
 
 #include "coverage/coverage.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/multisample.hpp"
 #include "facet/procedural.hpp"
@@ -105,7 +106,7 @@ void expectEveryTargetGivesTheScalarSamples(const Scene& scene, const RenderSett
         Framebuffer scalarFrame;
         detail::enableSpanLoops(false);
         const RenderStats expected = renderer.render(scene, settings, scalarFrame).value();
-        const Framebuffer scalarSamples = renderer.samples();
+        const Framebuffer scalarSamples = facet::sampleBuffer(renderer);
         detail::enableSpanLoops(true);
         ASSERT_GT(expected.fragments, 0u) << name;
         ASSERT_EQ(scalarSamples.color.size(), scalarFrame.color.size() * static_cast<unsigned>(n))
@@ -117,7 +118,7 @@ void expectEveryTargetGivesTheScalarSamples(const Scene& scene, const RenderSett
             Framebuffer frame;
             const RenderStats actual = renderer.render(scene, settings, frame).value();
             EXPECT_EQ(actual.fragments, expected.fragments) << name;
-            const Diffs samples = differences(scalarSamples, renderer.samples());
+            const Diffs samples = differences(scalarSamples, facet::sampleBuffer(renderer));
             const Diffs pixels = differences(scalarFrame, frame);
             const char* on = hwy::TargetName(target);
             EXPECT_EQ(samples.color, 0u) << name << " sample colours on " << on;
@@ -242,12 +243,12 @@ TEST_F(SimdTargetsMsaa, SharedEdgesAndDepthTiesGiveTheScalarSamples) {
                 Renderer renderer;
                 Framebuffer frame;
                 renderer.render(once, s, frame);
-                const Framebuffer plane = renderer.samples();
+                const Framebuffer plane = facet::sampleBuffer(renderer);
                 std::size_t background = 0;
                 for (const float z : plane.depth) background += std::isinf(z) ? 1 : 0;
                 EXPECT_EQ(background, 0u) << what << " msaa" << n;
                 renderer.render(thrice, s, frame);
-                const Diffs d = differences(plane, renderer.samples());
+                const Diffs d = differences(plane, facet::sampleBuffer(renderer));
                 EXPECT_EQ(d.color, 0u) << what << " msaa" << n;
                 EXPECT_EQ(d.depth, 0u) << what << " msaa" << n;
             }

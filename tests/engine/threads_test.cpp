@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/procedural.hpp"
 #include "facet/render.hpp"
@@ -112,7 +113,8 @@ TEST(Tiles, BordersNeitherDropNorDoublePixels) {
     const std::vector<glm::vec4> clip = clipPositions(scene.camera, scene.mesh->positions);
     const DrawInput input{.clip = clip, .indices = scene.mesh->indices, .nearPlane = 1e-3f};
     std::vector<std::uint16_t> counts;
-    renderer.countCoverage(input, settings, scene.camera.width, scene.camera.height, counts);
+    facet::countCoverage(renderer, input, settings, scene.camera.width, scene.camera.height,
+                         counts);
     std::size_t inside = 0, wrong = 0;
     for (const std::uint16_t n : counts) {
         inside += n > 0 ? 1 : 0;

@@ -5,7 +5,8 @@
 //
 // twice: a plain double version for the reference path (declared here), and an inline float
 // version for the fast path's per-vertex (Gouraud) and per-pixel (Phong) shading (internal:
-// shading/fast_lighting.hpp), fed by the FastLighting constants below.
+// shading/fast_lighting.hpp), fed by the FastLighting constants of
+// facet/advanced/fast_lighting.hpp.
 //
 // Choices the formula leaves open, identical in both versions:
 //  - An undefined direction is the zero vector, never NaN: l when the point is at the light (or a
@@ -45,21 +46,5 @@ double lightIntensity(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3
 inline glm::dvec3 shade(const glm::dvec3& rgb, double intensity) {
     return glm::clamp(rgb * intensity, 0.0, 1.0);
 }
-
-/// LightingParams folded into the float constants the fast path needs; rebuild it every frame
-/// (it costs a few multiplications) so edits to the parameters show at once.
-struct FastLighting {
-    /// The light's homogeneous position scaled to the same point or direction with w ≥ 0 and
-    /// largest |component| 1, so xyz − w·p is a finite vector towards the light even for a point
-    /// beyond float range (tiny w).
-    glm::vec4 light{0.0f, 0.0f, 1.0f, 0.0f};
-    float ambientTerm = 0.0f;  ///< Ia·Ka
-    float diffuse = 0.0f;      ///< Id·Kd
-    float specular = 0.0f;     ///< Id·Ks
-    float shininess = 1.0f;    ///< s
-};
-
-/// Folds the parameters for the float path.
-FastLighting prepareLighting(const LightingParams& params);
 
 }  // namespace facet

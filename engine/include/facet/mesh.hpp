@@ -65,9 +65,4 @@ std::vector<std::uint32_t> uniqueEdges(const Mesh& mesh);
 /// The same for a bare index list, written into `edges` (its capacity is reused).
 void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges);
 
-/// The same again with `keys` as scratch. Both keep their
-/// capacity, so a repeated call allocates nothing.
-void uniqueEdges(std::span<const std::uint32_t> indices, std::vector<std::uint32_t>& edges,
-                 std::vector<std::uint64_t>& keys);
-
 }  // namespace facet

@@ -19,11 +19,6 @@ namespace facet {
 /// range, as every loader guarantees.
 std::vector<glm::vec3> computeVertexNormals(const Mesh& mesh);
 
-/// The same into `normals`, with `scratch` for the sums: both keep their capacity, so a renderer
-/// that calls this every frame allocates only when the mesh grows.
-void computeVertexNormals(const Mesh& mesh, std::vector<glm::vec3>& normals,
-                          std::vector<glm::dvec4>& scratch);
-
 /// Length of the segments the normals display draws: the bounding-box diagonal / 100, so the
 /// segments scale with the model (0 for an empty mesh).
 float normalDisplayLength(const Mesh& mesh);

@@ -97,6 +97,16 @@ struct Window {
 Result<Image> renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
                            const Progress& progress = {});
 
+/// renderWindow() of the scene seen `scale` times larger: the camera resized to width·scale ×
+/// height·scale with the focal length scaled alike (resizedCamera), so the image's pixel centres
+/// are a scale × scale grid of sub-samples inside each of the frame's pixels; `window` is in the
+/// scaled image's pixels. The scaled camera may pass kMaxImageSide (the ground truth's
+/// supersampling): the scene's own camera is checked as render() checks it, and the window's
+/// memory against kMaxReferenceBytes. An error for those, a scale below 1 or a window outside
+/// the scaled image.
+Result<Image> renderScaledWindow(const Scene& scene, const RenderSettings& settings, int scale,
+                                 const Window& window, const Progress& progress = {});
+
 /// render()'s image of samples, before the resolve (drawSamples()); refuses what render() does.
 Result<Image> renderSamples(const Scene& scene, const RenderSettings& settings);
 

@@ -1,6 +1,8 @@
 #pragma once
 // The fast path: scene -> clip space -> near/guard-band clipping -> fixed-point rasterization ->
 // shading into a Framebuffer. Variants are template specialisations picked once per draw.
+// Drawing clip-space geometry directly, coverage counts and the per-sample buffer are the
+// advanced API (facet/advanced/draw.hpp).
 
 #include <cstddef>
 #include <cstdint>
@@ -16,30 +18,15 @@
 #include "facet/camera.hpp"  // checkFrame, resolveNearPlane
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/lighting.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 
 namespace facet {
 
-class Texture;
 struct DebugMap;
-
-/// Geometry already in clip space (see camera.hpp), as one draw consumes it. Only the streams
-/// the settings need are read: colours for every shader but Depth (and Texture without
-/// combine), uvs for Texture, normals and positions for Phong lighting.
-struct DrawInput {
-    std::span<const glm::vec4> clip;         ///< one per vertex
-    std::span<const glm::vec3> colors;       ///< one per vertex (lit for Gouraud), or empty: white
-    std::span<const glm::vec2> uvs;          ///< one per vertex, or empty: (0, 0)
-    std::span<const glm::vec3> normals;      ///< world-space unit (or zero) normals, Phong
-    std::span<const glm::vec3> positions;    ///< world-space positions, Phong
-    std::span<const std::uint32_t> indices;  ///< three per triangle
-    float nearPlane = 1e-3f;                 ///< clip.w below this is cut away
-    const Texture* texture = nullptr;        ///< Texture shader; null samples as white
-    FastLighting lighting;                   ///< Phong: the folded §6 parameters
-    glm::vec3 eye{0.0f};                     ///< Phong: camera centre in world space
-};
+namespace detail {
+struct RendererAccess;
+}
 
 /// What a draw did, for --stats, the viewer and tests.
 struct RenderStats {
@@ -85,25 +72,8 @@ class Renderer {
     Result<RenderStats> renderDebugView(const Scene& scene, const RenderSettings& settings,
                                         Framebuffer& frame, DebugMap& map);
 
-    /// Draws clip-space geometry into `frame` without clearing it. With the Depth shader the
-    /// depth-to-colour pass runs over the whole frame afterwards. An error when the frame's size
-    /// is outside the limits or its planes are not that size.
-    Result<RenderStats> draw(const DrawInput& input, const RenderSettings& settings,
-                             Framebuffer& frame);
-
-    /// Counts, per pixel, how many triangles cover its centre (fill-rule tests, overdraw views);
-    /// with settings.msaa > 1, per sample, in the per-sample buffer's layout (samples()).
-    /// `counts` is resized to width*height*samples and zeroed first. Honours culling and clipping.
-    /// An error, `counts` untouched, when the size is outside the limits.
-    Status countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
-                         int height, std::vector<std::uint16_t>& counts);
-
-    /// The per-sample buffer of the last multisampled draw, before the resolve: sample k of
-    /// pixel (x, y) at (x·b.x + k mod b.x, y·b.y + k div b.x), b = sampleBlock(msaa)
-    /// (facet/multisample.hpp); colours already mapped for the Depth shader. Empty before one.
-    const Framebuffer& samples() const;
-
   private:
+    friend struct detail::RendererAccess;  // the advanced API (facet/advanced/draw.hpp)
     struct Impl;  // the scratch buffers and caches kept between frames (pipeline/renderer.cpp)
     std::unique_ptr<Impl> impl_;
 };

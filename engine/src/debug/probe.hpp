@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "binning/tiles.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/render.hpp"
 #include "facet/settings.hpp"
 
 namespace facet::detail {

@@ -12,7 +12,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "facet/render.hpp"
+#include "facet/advanced/draw.hpp"
 
 namespace facet::detail {
 

@@ -13,7 +13,7 @@
 #include <cstdint>
 
 #include "coverage/coverage.hpp"
-#include "facet/render.hpp"
+#include "facet/advanced/draw.hpp"
 #include "frontend/fetch.hpp"
 #include "frontend/planes.hpp"
 

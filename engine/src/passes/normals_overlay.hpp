@@ -9,8 +9,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 

@@ -4,8 +4,8 @@
 // for the one-sample loops in renderer.cpp as they were.
 
 #include "binning/tiles.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/render.hpp"
 #include "pipeline/variants.hpp"
 
 namespace facet::detail {

@@ -12,6 +12,7 @@
 #include "binning/tiles.hpp"
 #include "debug/debug_maps.hpp"
 #include "debug/probe.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/camera.hpp"
 #include "facet/debug_view.hpp"
 #include "facet/legend.hpp"
@@ -26,6 +27,7 @@
 #include "pipeline/variants.hpp"
 #include "pipeline/vertex_stage.hpp"
 #include "scene/fingerprint.hpp"
+#include "scene/scratch.hpp"
 #include "shading/msaa_loop.hpp"
 #include "shading/scalar_loop.hpp"
 
@@ -61,7 +63,7 @@ struct Renderer::Impl {
     RenderStats renderView(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                            Framebuffer& frame, DrawInput* input = nullptr);
 
-    /// Renderer::draw on a frame already checked.
+    /// draw() (facet/advanced/draw.hpp) on a frame already checked.
     RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
 };
 
@@ -202,18 +204,27 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
     return stats;
 }
 
-Result<RenderStats> Renderer::draw(const DrawInput& input, const RenderSettings& settings,
-                                   Framebuffer& frame) {
+/// The advanced API's way into a Renderer's scratch buffers (a friend of Renderer).
+struct detail::RendererAccess {
+    /// The renderer's kept state.
+    static Renderer::Impl& impl(Renderer& renderer) { return *renderer.impl_; }
+    /// The same, read-only.
+    static const Renderer::Impl& impl(const Renderer& renderer) { return *renderer.impl_; }
+};
+
+Result<RenderStats> draw(Renderer& renderer, const DrawInput& input, const RenderSettings& settings,
+                         Framebuffer& frame) {
     if (Status st = checkFramebuffer(frame, settings); !st) return st.error();
-    return impl_->draw(input, settings, frame);
+    return RendererAccess::impl(renderer).draw(input, settings, frame);
 }
 
-const Framebuffer& Renderer::samples() const {
-    return impl_->samples;
+const Framebuffer& sampleBuffer(const Renderer& renderer) {
+    return RendererAccess::impl(renderer).samples;
 }
 
-Status Renderer::countCoverage(const DrawInput& input, const RenderSettings& settings, int width,
-                               int height, std::vector<std::uint16_t>& counts) {
+Status countCoverage(Renderer& renderer, const DrawInput& input, const RenderSettings& settings,
+                     int width, int height, std::vector<std::uint16_t>& counts) {
+    auto& impl = RendererAccess::impl(renderer);
     if (Status st = checkImageSize(width, height, 1, settings.msaa); !st) return st;
     const int samples = msaaSamples(settings.msaa);
     counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
@@ -222,14 +233,14 @@ Status Renderer::countCoverage(const DrawInput& input, const RenderSettings& set
     RenderStats stats;
     if (samples > 1) {
         SampleCounts ctx{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)};
-        impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height,
-                          &countSamples, &ctx, resolveThreads(settings.threads),
-                          clampedSubPixelBits(settings), stats, SamplePattern::kReach);
+        impl.tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height,
+                        &countSamples, &ctx, resolveThreads(settings.threads),
+                        clampedSubPixelBits(settings), stats, SamplePattern::kReach);
         return {};
     }
     CoverageCounts ctx{counts.data(), width};
-    impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
-                      &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
+    impl.tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
+                    &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
     return {};
 }
 

@@ -5,7 +5,7 @@
 
 #include <type_traits>
 
-#include "facet/render.hpp"
+#include "facet/advanced/draw.hpp"
 #include "facet/settings.hpp"
 #include "frontend/fetch.hpp"
 #include "shading/fragment.hpp"

@@ -8,6 +8,7 @@
 #include "facet/normals.hpp"
 #include "pipeline/variants.hpp"
 #include "scene/fingerprint.hpp"
+#include "scene/scratch.hpp"
 #include "shading/fast_lighting.hpp"
 
 namespace facet::detail {

@@ -11,9 +11,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "facet/advanced/draw.hpp"
 #include "facet/lighting.hpp"
 #include "facet/mesh.hpp"
-#include "facet/render.hpp"
 #include "facet/scene.hpp"
 #include "facet/settings.hpp"
 

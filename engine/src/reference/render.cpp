@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "facet/camera.hpp"
@@ -14,7 +16,6 @@
 #include "facet/multisample.hpp"
 #include "facet/normals.hpp"
 #include "facet/reference.hpp"
-#include "reference/scene_render.hpp"
 
 namespace facet::reference {
 
@@ -108,10 +109,6 @@ Image withSceneInput(const Scene& scene, const RenderSettings& settings, const W
     return draw(input, window.width, window.height);
 }
 
-}  // namespace
-
-namespace {
-
 /// Samples per pixel of the reference image the settings draw (multisampling in Solid mode).
 int referenceSamples(const RenderSettings& settings) {
     return settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
@@ -126,10 +123,8 @@ Status checkSceneFrame(const Scene& scene, const RenderSettings& settings) {
     return checkReferenceImage(scene.camera.width, scene.camera.height, referenceSamples(settings));
 }
 
-}  // namespace
-
-namespace detail {
-
+/// The draw of `window` without the checks: the callers below have checked the camera, the
+/// window and the memory.
 Image renderWindowUnchecked(const Scene& scene, const RenderSettings& settings,
                             const Window& window, const Progress& progress) {
     return withSceneInput(scene, settings, window, [&](const Input& input, int width, int height) {
@@ -137,30 +132,55 @@ Image renderWindowUnchecked(const Scene& scene, const RenderSettings& settings,
     });
 }
 
-}  // namespace detail
+/// An error unless `window` lies inside a width × height image.
+Status checkWindow(const Window& window, long long width, long long height) {
+    if (window.width >= 1 && window.height >= 1 && window.x >= 0 && window.y >= 0 &&
+        window.x <= width - window.width && window.y <= height - window.height)
+        return {};
+    return Error{{},
+                 "window " + std::to_string(window.width) + "x" + std::to_string(window.height) +
+                     " at (" + std::to_string(window.x) + ", " + std::to_string(window.y) +
+                     ") is not inside the " + std::to_string(width) + "x" + std::to_string(height) +
+                     " frame"};
+}
+
+}  // namespace
 
 Result<Image> render(const Scene& scene, const RenderSettings& settings, const Progress& progress) {
     if (Status st = checkSceneFrame(scene, settings); !st) return st.error();
-    return detail::renderWindowUnchecked(scene, settings, wholeFrame(scene), progress);
+    return renderWindowUnchecked(scene, settings, wholeFrame(scene), progress);
 }
 
 Result<Image> renderWindow(const Scene& scene, const RenderSettings& settings, const Window& window,
                            const Progress& progress) {
     if (Status st = checkFrame(scene.camera, RenderSettings{}); !st) return st.error();
     if (!scene.mesh) return Error{{}, "the scene has no mesh"};
-    if (window.width < 1 || window.height < 1 || window.x < 0 || window.y < 0 ||
-        window.x > scene.camera.width - window.width ||
-        window.y > scene.camera.height - window.height)
-        return Error{{},
-                     "window " + std::to_string(window.width) + "x" +
-                         std::to_string(window.height) + " at (" + std::to_string(window.x) + ", " +
-                         std::to_string(window.y) + ") is not inside the " +
-                         std::to_string(scene.camera.width) + "x" +
-                         std::to_string(scene.camera.height) + " frame"};
+    if (Status st = checkWindow(window, scene.camera.width, scene.camera.height); !st)
+        return st.error();
     if (Status st = checkReferenceImage(window.width, window.height, referenceSamples(settings));
         !st)
         return st.error();
-    return detail::renderWindowUnchecked(scene, settings, window, progress);
+    return renderWindowUnchecked(scene, settings, window, progress);
+}
+
+Result<Image> renderScaledWindow(const Scene& scene, const RenderSettings& settings, int scale,
+                                 const Window& window, const Progress& progress) {
+    RenderSettings one = settings;
+    one.supersample = 1;
+    if (Status st = checkFrame(scene.camera, one); !st) return st.error();
+    if (!scene.mesh) return Error{{}, "the scene has no mesh"};
+    if (scale < 1) return Error{{}, "scale " + std::to_string(scale) + " is below 1"};
+    const long long width = static_cast<long long>(scene.camera.width) * scale;
+    const long long height = static_cast<long long>(scene.camera.height) * scale;
+    if (width > std::numeric_limits<int>::max() || height > std::numeric_limits<int>::max())
+        return Error{{}, "scale " + std::to_string(scale) + " is too large for the frame"};
+    if (Status st = checkWindow(window, width, height); !st) return st.error();
+    if (Status st = checkReferenceImage(window.width, window.height, referenceSamples(settings));
+        !st)
+        return st.error();
+    Scene scaled = scene;  // the mesh and the texture are shared
+    scaled.camera = resizedCamera(scene.camera, static_cast<int>(width), static_cast<int>(height));
+    return renderWindowUnchecked(scaled, settings, window, progress);
 }
 
 Result<Image> renderSamples(const Scene& scene, const RenderSettings& settings) {

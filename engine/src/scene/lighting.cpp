@@ -1,7 +1,7 @@
 // The scene's lighting inputs folded into the float constants of the fast path (its
 // per-pixel formula is shading/fast_lighting.hpp; the double one is reference/lighting.cpp).
 
-#include "facet/lighting.hpp"
+#include "facet/advanced/fast_lighting.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,6 +7,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "scene/scratch.hpp"
+
 namespace facet {
 
 float Bounds::diagonal() const {

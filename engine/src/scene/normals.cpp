@@ -11,6 +11,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "scene/scratch.hpp"
+
 namespace facet {
 
 namespace {

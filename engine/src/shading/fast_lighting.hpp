@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "facet/lighting.hpp"
+#include "facet/advanced/fast_lighting.hpp"
 
 namespace facet {
 

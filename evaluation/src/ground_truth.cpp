@@ -24,7 +24,6 @@
 #include "facet/camera.hpp"
 #include "facet/limits.hpp"
 #include "facet/reference.hpp"
-#include "reference/scene_render.hpp"
 
 namespace facet {
 
@@ -75,13 +74,6 @@ GroundTruth averageBlocks(const reference::Image& image, int n, int width, int h
     return truth;
 }
 
-/// The scene with its camera at n times the size: sub-sample centres at (k + ½)/n in each pixel.
-Scene bigScene(const Scene& scene, int n) {
-    Scene big = scene;  // the mesh and the texture are shared
-    big.camera = resizedCamera(scene.camera, scene.camera.width * n, scene.camera.height * n);
-    return big;
-}
-
 }  // namespace
 
 Result<GroundTruth> renderGroundTruth(const Scene& scene, const RenderSettings& settings,
@@ -101,9 +93,12 @@ Result<GroundTruth> renderGroundTruth(const Scene& scene, const RenderSettings& 
     // The reference render is nearly all of the time; the average after it is the last 1 %.
     reference::Progress renderProgress;
     if (progress) renderProgress = [&progress](double f) { return progress(0.99 * f); };
-    const Scene big = bigScene(scene, n);
-    const reference::Image image = reference::detail::renderWindowUnchecked(
-        big, truthSettings, {0, 0, big.camera.width, big.camera.height}, renderProgress);
+    // Sub-sample centres at (k + ½)/n in each pixel: the scene seen n times larger.
+    Result<reference::Image> rendered = reference::renderScaledWindow(
+        scene, truthSettings, n, {0, 0, scene.camera.width * n, scene.camera.height * n},
+        renderProgress);
+    if (!rendered) return rendered.error();
+    const reference::Image& image = rendered.value();
     if (image.cancelled) {
         GroundTruth truth;
         truth.cancelled = true;
@@ -117,11 +112,13 @@ Result<GroundTruth> renderGroundTruth(const Scene& scene, const RenderSettings& 
 GroundTruth renderGroundTruthPixel(const Scene& scene, const RenderSettings& settings, int x, int y,
                                    int samples) {
     if (x < 0 || y < 0 || x >= scene.camera.width || y >= scene.camera.height) return {};
+    // Checked before x·n, which a refused camera's size could overflow.
     if (!checkFrame(scene.camera, RenderSettings{}) || !scene.mesh) return {};
     const int n = std::clamp(samples, 1, kMaxGroundTruthSamples);
-    const reference::Image image = reference::detail::renderWindowUnchecked(
-        bigScene(scene, n), groundTruthSettings(settings), {x * n, y * n, n, n});
-    return averageBlocks(image, n, 1, 1);
+    const Result<reference::Image> image = reference::renderScaledWindow(
+        scene, groundTruthSettings(settings), n, {x * n, y * n, n, n});
+    if (!image) return {};
+    return averageBlocks(image.value(), n, 1, 1);
 }
 
 }  // namespace facet
