@@ -76,6 +76,17 @@ namespace {
 struct CoverageCounts {
     std::uint16_t* counts;
     int width;
+
+    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+        std::size_t covered = 0;
+        forEachCovered(setup, [&](int x, int y) {
+            ++covered;
+            std::uint16_t& n = counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                                      static_cast<std::size_t>(x)];
+            if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+        });
+        return covered;
+    }
 };
 
 /// Counts covered samples instead (multisampling): `counts` in the per-sample buffer's layout.
@@ -83,38 +94,26 @@ struct SampleCounts {
     std::uint16_t* counts;
     int width;  ///< of the per-sample buffer
     SamplePattern pattern;
+
+    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+        const SamplePattern& sp = pattern;
+        std::size_t covered = 0;
+        forEachCoveredSamples(setup, sp,
+                              [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
+                                  ++covered;
+                                  const std::size_t first =
+                                      static_cast<std::size_t>(y * sp.block.y) *
+                                          static_cast<std::size_t>(width) +
+                                      static_cast<std::size_t>(x * sp.block.x);
+                                  for (int j = 0; j < sp.count; ++j) {
+                                      if (!(mask & (1u << j))) continue;
+                                      std::uint16_t& n = counts[first + sp.at(j, width)];
+                                      if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+                                  }
+                              });
+        return covered;
+    }
 };
-
-std::size_t countSamples(void* context, const CoverageSetup& setup, const Planes&) {
-    const SampleCounts& c = *static_cast<const SampleCounts*>(context);
-    const SamplePattern& sp = c.pattern;
-    std::size_t covered = 0;
-    forEachCoveredSamples(setup, sp, [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
-        ++covered;
-        const std::size_t first =
-            static_cast<std::size_t>(y * sp.block.y) * static_cast<std::size_t>(c.width) +
-            static_cast<std::size_t>(x * sp.block.x);
-        for (int j = 0; j < sp.count; ++j) {
-            if (!(mask & (1u << j))) continue;
-            std::uint16_t& n = c.counts[first + sp.at(j, c.width)];
-            if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
-        }
-    });
-    return covered;
-}
-
-std::size_t countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
-    const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
-    std::size_t covered = 0;
-    forEachCovered(setup, [&](int x, int y) {
-        ++covered;
-        std::uint16_t& n =
-            c.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) +
-                     static_cast<std::size_t>(x)];
-        if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
-    });
-    return covered;
-}
 
 /// Bytes per vertex the draw reads or derives, for --stats.
 std::size_t vertexBytes(const RenderSettings& s, const Mesh& mesh, const VariantKey& key) {
@@ -165,8 +164,8 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
                                   input.eye, glm::vec3(1.0f)};
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
     const int threads = resolveThreads(settings.threads);
-    const RasterizeFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
-    const RasterizeFn blocks = blockLoop(key);
+    const PixelLoopFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
+    const PixelLoopFn blocks = blockLoop(key);
     // Multisampling draws triangles into the per-sample buffer, which starts as the frame's
     // pixels and is resolved back into it; lines and points stay one sample (spec §11).
     const int sampleCount = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
@@ -181,10 +180,10 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
             using V = decltype(variant);
             switch (settings.mode) {
                 case DrawMode::Solid: {
-                    RasterContext ctx{&frame, &constants, subdivision, spans, blocks};
-                    tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width, frame.height,
-                               &rasterizeTriangle<V>, &ctx, threads, clampedSubPixelBits(settings),
-                               stats);
+                    const TriangleRaster<V> raster{
+                        {&frame, &constants, subdivision, spans, blocks}};
+                    tiles.draw(drawJob(input, V::kLayout, settings, frame.width, frame.height),
+                               raster, threads, stats);
                     break;
                 }
                 case DrawMode::Wireframe:
@@ -221,15 +220,15 @@ Status Renderer::countCoverage(const DrawInput& input, const RenderSettings& set
                   0);
     RenderStats stats;
     if (samples > 1) {
-        SampleCounts ctx{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)};
-        impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height,
-                          &countSamples, &ctx, resolveThreads(settings.threads),
-                          clampedSubPixelBits(settings), stats, SamplePattern::kReach);
+        DrawJob job = drawJob(input, VaryingLayout{}, settings, width, height);
+        job.sampleReach = SamplePattern::kReach;
+        impl_->tiles.draw(
+            job, SampleCounts{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)},
+            resolveThreads(settings.threads), stats);
         return {};
     }
-    CoverageCounts ctx{counts.data(), width};
-    impl_->tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
-                      &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
+    impl_->tiles.draw(drawJob(input, VaryingLayout{}, settings, width, height),
+                      CoverageCounts{counts.data(), width}, resolveThreads(settings.threads), stats);
     return {};
 }
 
