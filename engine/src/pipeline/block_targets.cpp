@@ -18,7 +18,8 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 PixelLoopFn blockLoopOf(const VariantKey& key) {
-    return vectorLoopOf<PixelLoopFn>(key, [](auto variant) { return &rasterizeBlocks<decltype(variant)>; });
+    return vectorLoopOf<PixelLoopFn>(
+        key, [](auto variant) { return &rasterizeBlocks<decltype(variant)>; });
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE

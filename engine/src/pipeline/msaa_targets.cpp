@@ -18,7 +18,8 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 MsaaLoopFn msaaLoopOf(const VariantKey& key) {
-    return vectorLoopOf<MsaaLoopFn>(key, [](auto variant) { return &rasterizeMsaaSpans<decltype(variant)>; });
+    return vectorLoopOf<MsaaLoopFn>(
+        key, [](auto variant) { return &rasterizeMsaaSpans<decltype(variant)>; });
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE

@@ -61,8 +61,11 @@ struct Renderer::Impl {
     RenderStats renderView(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                            Framebuffer& frame, DrawInput* input = nullptr);
 
-    /// Renderer::draw on a frame already checked.
-    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
+    /// Renderer::draw on a frame already checked. With `clear` (a draw that clearsInTiles()), the
+    /// frame's old contents do not matter: the tile renderer clears each tile to that colour
+    /// right before drawing into it.
+    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame,
+                     const std::uint32_t* clear = nullptr);
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
@@ -81,8 +84,9 @@ struct CoverageCounts {
         std::size_t covered = 0;
         forEachCovered(setup, [&](int x, int y) {
             ++covered;
-            std::uint16_t& n = counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                                      static_cast<std::size_t>(x)];
+            std::uint16_t& n =
+                counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                       static_cast<std::size_t>(x)];
             if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
         });
         return covered;
@@ -98,22 +102,27 @@ struct SampleCounts {
     std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
         const SamplePattern& sp = pattern;
         std::size_t covered = 0;
-        forEachCoveredSamples(setup, sp,
-                              [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
-                                  ++covered;
-                                  const std::size_t first =
-                                      static_cast<std::size_t>(y * sp.block.y) *
-                                          static_cast<std::size_t>(width) +
-                                      static_cast<std::size_t>(x * sp.block.x);
-                                  for (int j = 0; j < sp.count; ++j) {
-                                      if (!(mask & (1u << j))) continue;
-                                      std::uint16_t& n = counts[first + sp.at(j, width)];
-                                      if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
-                                  }
-                              });
+        forEachCoveredSamples(
+            setup, sp, [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
+                ++covered;
+                const std::size_t first =
+                    static_cast<std::size_t>(y * sp.block.y) * static_cast<std::size_t>(width) +
+                    static_cast<std::size_t>(x * sp.block.x);
+                for (int j = 0; j < sp.count; ++j) {
+                    if (!(mask & (1u << j))) continue;
+                    std::uint16_t& n = counts[first + sp.at(j, width)];
+                    if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+                }
+            });
         return covered;
     }
 };
+
+/// Whether draw() can clear the frame tile by tile (TileClear): one-sample solid draws, whose
+/// triangles go through the tile renderer straight into the frame.
+bool clearsInTiles(const RenderSettings& s) {
+    return s.mode == DrawMode::Solid && msaaSamples(s.msaa) == 1;
+}
 
 /// Bytes per vertex the draw reads or derives, for --stats.
 std::size_t vertexBytes(const RenderSettings& s, const Mesh& mesh, const VariantKey& key) {
@@ -154,7 +163,7 @@ Status checkFramebuffer(const Framebuffer& frame, const RenderSettings& settings
 }  // namespace
 
 RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& settings,
-                                 Framebuffer& frame) {
+                                 Framebuffer& frame, const std::uint32_t* clear) {
     RenderStats stats;
     if (frame.width <= 0 || frame.height <= 0) return stats;
     const VariantKey key = variantKey(settings, input);
@@ -182,8 +191,9 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
                 case DrawMode::Solid: {
                     const TriangleRaster<V> raster{
                         {&frame, &constants, subdivision, spans, blocks}};
+                    const TileClear tileClear{&frame, clear ? *clear : 0u};
                     tiles.draw(drawJob(input, V::kLayout, settings, frame.width, frame.height),
-                               raster, threads, stats);
+                               raster, threads, stats, clear ? &tileClear : nullptr);
                     break;
                 }
                 case DrawMode::Wireframe:
@@ -223,12 +233,14 @@ Status Renderer::countCoverage(const DrawInput& input, const RenderSettings& set
         DrawJob job = drawJob(input, VaryingLayout{}, settings, width, height);
         job.sampleReach = SamplePattern::kReach;
         impl_->tiles.draw(
-            job, SampleCounts{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)},
+            job,
+            SampleCounts{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)},
             resolveThreads(settings.threads), stats);
         return {};
     }
     impl_->tiles.draw(drawJob(input, VaryingLayout{}, settings, width, height),
-                      CoverageCounts{counts.data(), width}, resolveThreads(settings.threads), stats);
+                      CoverageCounts{counts.data(), width}, resolveThreads(settings.threads),
+                      stats);
     return {};
 }
 
@@ -307,7 +319,11 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
     Clock::time_point t = Clock::now();
     (void)frame.resize(cam.width, cam.height);  // within the limits: checked by checkFrame
     const int threads = resolveThreads(settings.threads);
-    clearFrame(frame, rgbaFromHex(settings.background), threads);
+    const std::uint32_t background = rgbaFromHex(settings.background);
+    // A one-sample solid draw clears each tile right before its triangles, while it is in
+    // cache; the other draws read or keep the frame around their triangles: cleared first.
+    const bool tileClear = clearsInTiles(settings);
+    if (!tileClear) clearFrame(frame, background, threads);
     const double clearMs = msSince(t);
 
     // Vertex stage: only the streams the settings need.
@@ -320,7 +336,7 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
     if (inputOut) *inputOut = input;
 
     // The draw, then the passes after it.
-    RenderStats stats = draw(input, settings, frame);
+    RenderStats stats = draw(input, settings, frame, tileClear ? &background : nullptr);
     stats.clearMs = clearMs;
     stats.vertexMs = vertexMs;
     stats.rasterMs = msSince(t);

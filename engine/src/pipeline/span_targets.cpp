@@ -17,7 +17,8 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
 PixelLoopFn spanLoopOf(const VariantKey& key) {
-    return vectorLoopOf<PixelLoopFn>(key, [](auto variant) { return &rasterizeSpans<decltype(variant)>; });
+    return vectorLoopOf<PixelLoopFn>(
+        key, [](auto variant) { return &rasterizeSpans<decltype(variant)>; });
 }
 
 const char* targetName() {

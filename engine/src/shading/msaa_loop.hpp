@@ -193,8 +193,9 @@ template <class V>
 /// vector loop of the draw's SIMD target (MsaaContext::spans), the rest the scalar one above,
 /// by the same rule as the one-sample loops (rasterizeTriangle in scalar_loop.hpp).
 template <class V>
-inline std::size_t rasterizeMsaaTriangle(const MsaaContext& ctx, const CoverageSetup& setup,
-                                         const Planes& p) {
+[[gnu::always_inline]] inline std::size_t rasterizeMsaaTriangle(const MsaaContext& ctx,
+                                                                const CoverageSetup& setup,
+                                                                const Planes& p) {
     if constexpr (kHasSpanLoop<V>) {
         if (ctx.spans && setup.box.x1 - setup.box.x0 >= kNarrowBox) return ctx.spans(ctx, setup, p);
     }

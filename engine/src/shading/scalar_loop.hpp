@@ -156,11 +156,13 @@ template <class V>
 /// The triangle rasterizer of variant V: affine or perspective triangles take a vector loop of
 /// the draw's SIMD target, the span loop for wide boxes (RasterContext::spans) and the block loop
 /// for narrow ones (RasterContext::blocks) when not tiny and its 32-bit edge values suffice; the
-/// rest take the scalar loop. Each is kept out of line so that it is optimised (and its shading
-/// inlined) on its own.
+/// rest take the scalar loop. Each loop is kept out of line so that it is optimised (and its
+/// shading inlined) on its own; this choice is inlined into the tile loop (GCC 12 kept it out of
+/// line otherwise: one more call per triangle).
 template <class V>
-inline std::size_t rasterizeTriangle(const RasterContext& ctx, const CoverageSetup& setup,
-                                     const Planes& p) {
+[[gnu::always_inline]] inline std::size_t rasterizeTriangle(const RasterContext& ctx,
+                                                            const CoverageSetup& setup,
+                                                            const Planes& p) {
     if constexpr (kHasSpanLoop<V>) {
         if (setup.box.x1 - setup.box.x0 >= kNarrowBox) {
             if (ctx.spans) return ctx.spans(ctx, setup, p);
