@@ -293,8 +293,20 @@ TEST_P(Binning, HandsEachTileWhatTheFrontEndEmitted) {
         TileRecorder binned = recorder();
         RenderStats stats;
         TileRenderer renderer;
-        renderer.draw(in, layout, c.cull, kWidth, kHeight, &recordTile, &binned, threads, c.bits,
-                      stats, c.reach);
+        DrawJob job;
+        job.in = &in;
+        job.layout = layout;
+        job.cull = c.cull;
+        job.width = kWidth;
+        job.height = kHeight;
+        job.subPixelBits = c.bits;
+        job.sampleReach = c.reach;
+        renderer.draw(
+            job,
+            [&](const CoverageSetup& setup, const Planes& planes) {
+                return recordTile(&binned, setup, planes);
+            },
+            threads, stats);
         for (std::size_t t = 0; t < expected.tiles.size(); ++t)
             EXPECT_TRUE(binned.tiles[t] == expected.tiles[t])
                 << "tile " << t << ", " << threads << " threads";

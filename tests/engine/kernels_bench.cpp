@@ -342,8 +342,8 @@ DrawConstants benchConstants() {
 // the given vector loops (null: the scalar loop). Depth is cleared before each iteration,
 // outside the timing, so every pixel passes the depth test and is shaded.
 template <class V>
-void timeTriangles(benchmark::State& state, const std::vector<Emitted>& tris, RasterizeFn spans,
-                   RasterizeFn blocks) {
+void timeTriangles(benchmark::State& state, const std::vector<Emitted>& tris, PixelLoopFn spans,
+                   PixelLoopFn blocks) {
     const DrawConstants constants = benchConstants();
     Framebuffer fb;
     fb.resize(kQuad, kQuad);
@@ -355,7 +355,7 @@ void timeTriangles(benchmark::State& state, const std::vector<Emitted>& tris, Ra
         std::fill(fb.depth.begin(), fb.depth.end(), kEmptyDepth);
         state.ResumeTiming();
         pixels = 0;
-        for (const Emitted& t : tris) pixels += rasterizeTriangle<V>(&ctx, t.setup, t.planes);
+        for (const Emitted& t : tris) pixels += rasterizeTriangle<V>(ctx, t.setup, t.planes);
     }
     benchmark::DoNotOptimize(fb.color.data());
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pixels));
@@ -444,7 +444,7 @@ void shadeOccluded(benchmark::State& state) {
     std::size_t pixels = 0;
     for (auto _ : state) {
         pixels = 0;
-        for (const Emitted& t : tris) pixels += rasterizeTriangle<PhongV>(&ctx, t.setup, t.planes);
+        for (const Emitted& t : tris) pixels += rasterizeTriangle<PhongV>(ctx, t.setup, t.planes);
         benchmark::DoNotOptimize(pixels);
     }
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pixels));

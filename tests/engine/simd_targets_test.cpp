@@ -330,8 +330,8 @@ TEST(BlockLoop, CoversExactlyTheScalarPixelsOnEveryTarget) {
     constexpr std::uint32_t kWhite = 0xFFFFFFFFu;
     for (const std::int64_t target : targets) {
         hwy::SetSupportedTargetsForTest(target);
-        const detail::RasterizeFn simple = detail::blockLoopFor<SimpleV>();
-        const detail::RasterizeFn painter = detail::blockLoopFor<PainterV>();
+        const detail::PixelLoopFn simple = detail::blockLoopFor<SimpleV>();
+        const detail::PixelLoopFn painter = detail::blockLoopFor<PainterV>();
         ASSERT_NE(simple, nullptr);
         ASSERT_NE(painter, nullptr);
         std::mt19937 rng(7);
@@ -358,7 +358,7 @@ TEST(BlockLoop, CoversExactlyTheScalarPixelsOnEveryTarget) {
                         edgeCentres += e == 0 || e == -1 ? 1 : 0;
                     }
             detail::RasterContext ctx{&fb, &constants, 16, nullptr, nullptr};
-            ASSERT_EQ(simple(&ctx, setup, planes), count) << hwy::TargetName(target);
+            ASSERT_EQ(simple(ctx, setup, planes), count) << hwy::TargetName(target);
             std::size_t wrong = 0;
             for (std::size_t i = 0; i < covered.size(); ++i)
                 wrong += (fb.color[i] == kWhite) != (covered[i] != 0) ? 1 : 0;
@@ -370,7 +370,7 @@ TEST(BlockLoop, CoversExactlyTheScalarPixelsOnEveryTarget) {
             for (int y = 0; y < fb.height; ++y)
                 for (int x = 0; x < fb.width; ++x)
                     fb.depth[fb.index(x, y)] = (x + y) % 2 == 0 ? 2.0f : 3.0f;
-            ASSERT_EQ(painter(&ctx, setup, planes), count) << hwy::TargetName(target);
+            ASSERT_EQ(painter(ctx, setup, planes), count) << hwy::TargetName(target);
             for (int y = 0; y < fb.height; ++y)
                 for (int x = 0; x < fb.width; ++x) {
                     const std::size_t i = fb.index(x, y);

@@ -124,6 +124,46 @@ TEST(Tiles, BordersNeitherDropNorDoublePixels) {
     EXPECT_EQ(wrong, 0u);
 }
 
+// The shaded draw clears each tile itself, right before its first triangles, instead of the frame
+// being cleared first: a frame holding garbage (the last frame's picture, say) must come out as
+// a cleared one would, every tile included, those no triangle reaches and those of an empty
+// mesh too, at 1 and 2 threads.
+TEST(Tiles, ClearEveryPixelWhenDrawingOverAnOldFrame) {
+    Scene scene;
+    scene.mesh = std::make_shared<const facet::Mesh>(makeUvSphere(24, 48));
+    scene.camera.eye = {0.0, 0.0, 3.0};
+    scene.camera.look = {0.0, 0.0, 0.0};
+    scene.camera.up = {0.0, -1.0, 0.0};
+    scene.camera.width = 301;  // the sphere in the middle: tiles at the sides hold no triangle
+    scene.camera.height = 197;
+    scene.camera.focal = 120.0;
+    for (const int threads : {1, 2})
+        for (const ShaderKind shader : {ShaderKind::Painter, ShaderKind::Simple}) {
+            RenderSettings settings;
+            settings.threads = threads;
+            settings.shader = shader;
+            Renderer renderer;
+            Framebuffer clean, reused;
+            ASSERT_TRUE(renderer.render(scene, settings, clean));
+            reused.resize(scene.camera.width, scene.camera.height);
+            for (std::size_t i = 0; i < reused.color.size(); ++i) {
+                reused.color[i] = 0x12345678u;
+                reused.depth[i] = -1.0f;  // nearer than anything: no fragment would pass
+            }
+            ASSERT_TRUE(renderer.render(scene, settings, reused));
+            EXPECT_TRUE(reused.color == clean.color) << threads << " threads";
+            EXPECT_TRUE(reused.depth == clean.depth) << threads << " threads";
+
+            Scene empty = scene;  // no triangle at all: still every pixel cleared
+            empty.mesh = std::make_shared<const facet::Mesh>();
+            for (std::size_t i = 0; i < reused.color.size(); ++i) reused.color[i] = 0x12345678u;
+            ASSERT_TRUE(renderer.render(empty, settings, reused));
+            std::size_t wrong = 0;
+            for (const std::uint32_t c : reused.color) wrong += c == 0x12345678u ? 1 : 0;
+            EXPECT_EQ(wrong, 0u) << threads << " threads, empty mesh";
+        }
+}
+
 // After the first frame, frames of the same size allocate nothing: the engine keeps its scratch
 // buffers, bins and records. Counted for every shader family and thread count.
 TEST(Allocation, NoneAfterTheFirstFrame) {

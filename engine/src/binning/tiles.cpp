@@ -26,51 +26,11 @@ namespace {
 constexpr std::size_t kBatchPerThread = 2048;
 constexpr std::size_t kBatchPerThreadShared = 8192;
 
-/// A record's head: the triangle's edges as the tile side reads them (the edge values at the
-/// box's first pixel centre in 64 bits; the steps from two edges' vertex differences, in 32 bits
-/// since the guard band bounds them, the third edge's being minus their sum) and the planes'
-/// base and depth plane. Keeping the edges, not the snapped vertices, spares every tile the
-/// triangle touches their rebuild (edgesOf, ~90 instructions: on the 1M-triangle sphere that
-/// cost more than the smaller record saved). A draw without varyings needs nothing more (the
-/// weights of vertices 1 and 2 only interpolate varyings); with varyings the weights' planes
-/// (l1, l2, u1, u2) and a0, d1 and d2 of the layout's varyings follow.
-struct RecordHead {
-    std::int64_t e0[3];
-    PixelRect box;
-    std::int32_t dx[2], dy[2];
-    int baseX, baseY;
-    float q[3];
-};
-static_assert(sizeof(RecordHead) == 80 && alignof(RecordHead) == 8);
-static_assert(std::is_trivially_copyable_v<RecordHead> && std::is_trivially_copyable_v<Planes>);
-
-/// Bytes of the weights' planes: l1, l2, u1 and u2, adjacent in Planes.
-constexpr std::size_t kWeightBytes = 12 * sizeof(float);
-static_assert(offsetof(Planes, u2) + 3 * sizeof(float) - offsetof(Planes, l1) == kWeightBytes);
-
 /// Bytes of a record with `varyings` varyings, a multiple of 8 so that the edges stay aligned.
 constexpr std::size_t recordBytes(int varyings) {
     const std::size_t planes =
         varyings == 0 ? 0 : kWeightBytes + 3 * sizeof(float) * static_cast<std::size_t>(varyings);
     return (sizeof(RecordHead) + planes + 7) / 8 * 8;
-}
-
-/// Whether `inner` lies within `outer`.
-bool contains(const PixelRect& outer, const PixelRect& inner) {
-    return inner.x0 >= outer.x0 && inner.y0 >= outer.y0 && inner.x1 <= outer.x1 &&
-           inner.y1 <= outer.y1;
-}
-
-/// Calls f(std::integral_constant<int, N>{}) for the N == n of N…: code that copies n
-/// varyings then copies a size known at compile time, inline moves instead of three calls to
-/// memcpy (with 3 varyings those calls were half of the tile loop's cost per triangle).
-template <class F, int... N>
-void withVaryingCount(int n, F&& f, std::integer_sequence<int, N...>) {
-    (void)((n == N ? (f(std::integral_constant<int, N>{}), true) : false) || ...);
-}
-template <class F>
-void withVaryingCount(int n, F&& f) {
-    withVaryingCount(n, f, std::make_integer_sequence<int, kMaxVaryings + 1>{});
 }
 
 void addCounters(RenderStats& to, const RenderStats& from) {
@@ -163,6 +123,17 @@ void sortByTile(TileRenderer::Slice& s) {
         order[s.cursor[entries[i].tile]++] = entries[i].offset;
 }
 
+/// Clears `rect` of the frame to the clear colour and kEmptyDepth.
+void clearRect(const TileClear& clear, const PixelRect& rect) {
+    Framebuffer& fb = *clear.frame;
+    const auto n = static_cast<std::ptrdiff_t>(rect.x1 - rect.x0 + 1);
+    for (int y = rect.y0; y <= rect.y1; ++y) {
+        const auto at = static_cast<std::ptrdiff_t>(fb.index(rect.x0, y));
+        std::fill_n(fb.color.begin() + at, n, clear.color);
+        std::fill_n(fb.depth.begin() + at, n, kEmptyDepth);
+    }
+}
+
 using Clock = std::chrono::steady_clock;
 
 double msBetween(Clock::time_point a, Clock::time_point b) {
@@ -176,65 +147,22 @@ int resolveThreads(int requested) {
     return std::max(1, omp_get_num_procs());
 }
 
-std::size_t TileRenderer::rasterizeTile(int tile, int tilesX, int width, int height,
-                                        RasterizeFn rasterize, void* context, std::size_t first,
-                                        std::size_t count) const {
-    const int x0 = tile % tilesX * kTileSize, y0 = tile / tilesX * kTileSize;
-    const PixelRect rect{x0, y0, std::min(x0 + kTileSize, width) - 1,
-                         std::min(y0 + kTileSize, height) - 1};
-    std::size_t fragments = 0;
-    CoverageSetup setup{};  // area2 is never read by the pixel loops
-    Planes planes{};        // what the record does not hold is never read (RecordHead)
-    const auto at = static_cast<std::size_t>(tile);
-    for (std::size_t s = first; s < first + count; ++s) {  // in submission order
-        const Slice& slice = slices_[s];
-        const auto* records = reinterpret_cast<const std::byte*>(slice.records.data());
-        withVaryingCount(slice.varyings, [&](auto varyings) {
-            constexpr std::size_t n = sizeof(float) * decltype(varyings)::value;
-            for (std::uint32_t k = slice.start[at]; k < slice.start[at + 1]; ++k) {
-                const std::byte* record = records + slice.order[k];
-                RecordHead head;
-                std::memcpy(&head, record, sizeof head);
-                const std::int64_t dx[3] = {head.dx[0], head.dx[1], -(head.dx[0] + head.dx[1])};
-                const std::int64_t dy[3] = {head.dy[0], head.dy[1], -(head.dy[0] + head.dy[1])};
-                for (int i = 0; i < 3; ++i) {  // as edgesOf() derives them
-                    setup.e0[i] = head.e0[i];
-                    setup.stepX[i] = -dy[i] * kSubPixel;
-                    setup.stepY[i] = dx[i] * kSubPixel;
-                }
-                setup.box = head.box;
-                // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
-                if (!contains(rect, setup.box)) {
-                    setup = restrictSetup(setup, rect);
-                    if (setup.box.empty()) continue;
-                }
-                planes.baseX = head.baseX;
-                planes.baseY = head.baseY;
-                std::memcpy(planes.q, head.q, sizeof head.q);
-                if constexpr (n > 0) {
-                    const std::byte* rest = record + sizeof head;
-                    std::memcpy(planes.l1, rest, kWeightBytes);
-                    rest += kWeightBytes;
-                    std::memcpy(planes.a0, rest, n);
-                    std::memcpy(planes.d1, rest + n, n);
-                    std::memcpy(planes.d2, rest + 2 * n, n);
-                }
-                fragments += rasterize(context, setup, planes);
-            }
-        });
-    }
-    return fragments;
-}
-
-void TileRenderer::draw(const DrawJob& job, RasterizeFn rasterize, void* context, int threads,
-                        RenderStats& stats) {
+void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer,
+                       const TileClear* clear) {
     const DrawInput& in = *job.in;
     const int width = job.width, height = job.height;
     const std::size_t triangles = in.indices.size() / 3;
-    if (width <= 0 || height <= 0 || triangles == 0) return;
+    if (width <= 0 || height <= 0) return;
+    if (triangles == 0) {
+        if (clear) clearRect(*clear, {0, 0, width - 1, height - 1});
+        return;
+    }
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     const int tiles = tilesX * tilesY;
+    width_ = width;
+    height_ = height;
+    tilesX_ = tilesX;
     const auto n = static_cast<std::size_t>(std::max(1, threads));
     // Several threads: two sets of n slices, the batch being binned and the batch being
     // rasterized (see below). One thread draws the previous batch's tiles before it bins the
@@ -307,8 +235,13 @@ void TileRenderer::draw(const DrawJob& job, RasterizeFn rasterize, void* context
                     slice.stats.frontEndMs += msBetween(t0, t1);
                     slice.stats.binningMs += msBetween(t1, t2);
                 } else if (k > 0) {
-                    fragments += rasterizeTile(t - slices, tilesX, width, height, rasterize,
-                                               context, consume, n);
+                    const int tile = t - slices;
+                    if (clear && k == 1) {  // every tile has a task in every step
+                        const int x0 = tile % tilesX * kTileSize, y0 = tile / tilesX * kTileSize;
+                        clearRect(*clear, {x0, y0, std::min(x0 + kTileSize, width) - 1,
+                                           std::min(y0 + kTileSize, height) - 1});
+                    }
+                    fragments += drawer.draw(*this, drawer.raster, {tile, consume, n});
                 }
             }
         }

@@ -8,10 +8,16 @@
 // image does not depend on the thread count, and no lock guards the framebuffer because no two
 // threads ever own the same tile.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
+#include "facet/framebuffer.hpp"
+#include "facet/settings.hpp"
 #include "frontend/front_end.hpp"
 
 namespace facet::detail {
@@ -23,21 +29,82 @@ inline constexpr int kTileSize = 64;
 /// Worker threads for a draw: `requested` when positive, else every core.
 int resolveThreads(int requested);
 
+/// The DrawJob of `in` drawn with `settings` into a width × height image with varyings `layout`:
+/// back-face culling and the sub-pixel grid (clamped to what the engine supports) from the
+/// settings, one sample per pixel.
+inline DrawJob drawJob(const DrawInput& in, const VaryingLayout& layout,
+                       const RenderSettings& settings, int width, int height) {
+    DrawJob job;
+    job.in = &in;
+    job.layout = layout;
+    job.cull = settings.cullBackFaces;
+    job.width = width;
+    job.height = height;
+    job.subPixelBits = std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
+    return job;
+}
+
+/// A record's head: the triangle's edges as the tile side reads them (the edge values at the
+/// box's first pixel centre in 64 bits; the steps from two edges' vertex differences, in 32 bits
+/// since the guard band bounds them, the third edge's being minus their sum) and the planes'
+/// base and depth plane. Keeping the edges, not the snapped vertices, spares every tile the
+/// triangle touches their rebuild (edgesOf, ~90 instructions: on the 1M-triangle sphere that
+/// cost more than the smaller record saved). A draw without varyings needs nothing more (the
+/// weights of vertices 1 and 2 only interpolate varyings); with varyings the weights' planes
+/// (l1, l2, u1, u2) and a0, d1 and d2 of the layout's varyings follow.
+struct RecordHead {
+    std::int64_t e0[3];
+    PixelRect box;
+    std::int32_t dx[2], dy[2];
+    int baseX, baseY;
+    float q[3];
+};
+static_assert(sizeof(RecordHead) == 80 && alignof(RecordHead) == 8);
+static_assert(std::is_trivially_copyable_v<RecordHead> && std::is_trivially_copyable_v<Planes>);
+
+/// Bytes of the weights' planes: l1, l2, u1 and u2, adjacent in Planes.
+inline constexpr std::size_t kWeightBytes = 12 * sizeof(float);
+static_assert(offsetof(Planes, u2) + 3 * sizeof(float) - offsetof(Planes, l1) == kWeightBytes);
+
+/// Calls f(std::integral_constant<int, N>{}) for the N == n of N…: code that copies n
+/// varyings then copies a size known at compile time, inline moves instead of three calls to
+/// memcpy (with 3 varyings those calls were half of the tile loop's cost per triangle).
+template <class F, int... N>
+void withVaryingCount(int n, F&& f, std::integer_sequence<int, N...>) {
+    (void)((n == N ? (f(std::integral_constant<int, N>{}), true) : false) || ...);
+}
+/// withVaryingCount() over 0 … kMaxVaryings.
+template <class F>
+void withVaryingCount(int n, F&& f) {
+    withVaryingCount(n, f, std::make_integer_sequence<int, kMaxVaryings + 1>{});
+}
+
+/// A frame the tile renderer clears itself, tile by tile, right before the tile's first
+/// triangles are drawn (so the clear's writes are still in the core's cache when the triangles
+/// test depth and write there, instead of a pass of its own over the whole frame first): colour
+/// `color`, depth kEmptyDepth. The frame must be the draw's size.
+struct TileClear {
+    Framebuffer* frame = nullptr;
+    std::uint32_t color = 0;
+};
+
 /// Runs the triangle pipeline on several threads; keeps its bins between draws so a steady
 /// frame allocates nothing.
 class TileRenderer {
   public:
-    /// Draws the triangles of `job` like drawTriangles() over the whole draw, rasterizing with
-    /// `rasterize` (whose `context` must be safe to share between threads for disjoint tiles).
-    /// Adds the front end's counters, its and binning's times and the fragments to `stats`.
-    void draw(const DrawJob& job, RasterizeFn rasterize, void* context, int threads,
-              RenderStats& stats);
-    /// draw() of the job these name (job.screen is the tile renderer's own vertex pass).
-    void draw(const DrawInput& in, const VaryingLayout& layout, bool cull, int width, int height,
-              RasterizeFn rasterize, void* context, int threads, int subPixelBits,
-              RenderStats& stats, int sampleReach = 0) {
-        draw({&in, layout, cull, width, height, subPixelBits, sampleReach, nullptr}, rasterize,
-             context, threads, stats);
+    /// Draws the triangles of `job` like drawTriangles() over the whole draw, calling
+    /// `raster(setup, planes)` (returning the pixels covered) for each triangle and tile it
+    /// touches, the setup clipped to the tile. `raster` is the draw's typed rasterizer (a
+    /// struct of the per-draw state with a call operator): the tile loop is instantiated with
+    /// it, so the per-triangle call is a direct one the compiler may inline. It must be safe to
+    /// call from several threads for disjoint tiles. Adds the front end's counters, its and
+    /// binning's times and the fragments to `stats`. With `clear`, every tile of that frame is
+    /// cleared just before its first triangles (and every pixel is cleared even when no triangle
+    /// is drawn).
+    template <class Raster>
+    void draw(const DrawJob& job, const Raster& raster, int threads, RenderStats& stats,
+              const TileClear* clear = nullptr) {
+        run(job, threads, stats, {&drawTileWith<Raster>, &raster}, clear);
     }
 
     /// A record's storage: cache-line aligned, records packed at multiples of 8 bytes (80
@@ -50,10 +117,10 @@ class TileRenderer {
         std::uint32_t tile;
         std::uint32_t offset;
     };
-    /// What one thread's slice of a batch produced: packed records (tiles.cpp's RecordHead,
-    /// then the planes the layout needs), the (tile, record) pairs in submission order, and
-    /// after the batch the same sorted by tile: tile t's records are order[start[t] …
-    /// start[t + 1]). Aligned to a cache line so that two threads never write to one.
+    /// What one thread's slice of a batch produced: packed records (RecordHead, then the planes
+    /// the layout needs), the (tile, record) pairs in submission order, and after the batch the
+    /// same sorted by tile: tile t's records are order[start[t] … start[t + 1]). Aligned to a
+    /// cache line so that two threads never write to one.
     struct alignas(64) Slice {
         std::vector<Line> records;  // grown, never shrunk: a steady frame allocates nothing
         std::size_t used = 0;       // bytes of `records` holding this batch's records
@@ -68,13 +135,89 @@ class TileRenderer {
         RenderStats stats;
     };
 
+    /// Which tile a thread draws and from which slices: the tile's records are in slices
+    /// [first, first + count), visited in that order (submission order).
+    struct TileTask {
+        int tile = 0;
+        std::size_t first = 0, count = 0;
+    };
+    /// The tile loop of one rasterizer type, and that rasterizer: called once per tile and
+    /// batch (not per triangle), so the type is erased here and nowhere below.
+    struct TileDrawer {
+        std::size_t (*draw)(const TileRenderer& self, const void* raster, const TileTask& task);
+        const void* raster;
+    };
+
   private:
-    std::size_t rasterizeTile(int tile, int tilesX, int width, int height, RasterizeFn rasterize,
-                              void* context, std::size_t first, std::size_t count) const;
+    /// The draw, its threads and batches (tiles.cpp); `drawer` rasterizes one tile.
+    void run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer,
+             const TileClear* clear);
+
+    template <class Raster>
+    static std::size_t drawTileWith(const TileRenderer& self, const void* raster,
+                                    const TileTask& task) {
+        return self.rasterizeTile(*static_cast<const Raster*>(raster), task);
+    }
+
+    /// Rasterizes the task's tile with `raster`, every record of its slices in order; returns
+    /// the pixels covered.
+    template <class Raster>
+    std::size_t rasterizeTile(const Raster& raster, const TileTask& task) const;
 
     std::vector<Slice> slices_;           // one set per thread, two when binning overlaps the tiles
     std::vector<ScreenVertex> screen_;    // the vertex pass's output, one per clip position
     std::vector<std::size_t> fragments_;  // per thread
+    int width_ = 0, height_ = 0, tilesX_ = 0;  // the draw being run
 };
+
+template <class Raster>
+std::size_t TileRenderer::rasterizeTile(const Raster& raster, const TileTask& task) const {
+    const int x0 = task.tile % tilesX_ * kTileSize, y0 = task.tile / tilesX_ * kTileSize;
+    const PixelRect rect{x0, y0, std::min(x0 + kTileSize, width_) - 1,
+                         std::min(y0 + kTileSize, height_) - 1};
+    std::size_t fragments = 0;
+    CoverageSetup setup{};  // area2 is never read by the pixel loops
+    Planes planes{};        // what the record does not hold is never read (RecordHead)
+    const auto at = static_cast<std::size_t>(task.tile);
+    for (std::size_t s = task.first; s < task.first + task.count; ++s) {  // submission order
+        const Slice& slice = slices_[s];
+        const auto* records = reinterpret_cast<const std::byte*>(slice.records.data());
+        withVaryingCount(slice.varyings, [&](auto varyings) {
+            constexpr std::size_t n = sizeof(float) * decltype(varyings)::value;
+            for (std::uint32_t k = slice.start[at]; k < slice.start[at + 1]; ++k) {
+                const std::byte* record = records + slice.order[k];
+                RecordHead head;
+                std::memcpy(&head, record, sizeof head);
+                const std::int64_t dx[3] = {head.dx[0], head.dx[1], -(head.dx[0] + head.dx[1])};
+                const std::int64_t dy[3] = {head.dy[0], head.dy[1], -(head.dy[0] + head.dy[1])};
+                for (int i = 0; i < 3; ++i) {  // as edgesOf() derives them
+                    setup.e0[i] = head.e0[i];
+                    setup.stepX[i] = -dy[i] * kSubPixel;
+                    setup.stepY[i] = dx[i] * kSubPixel;
+                }
+                setup.box = head.box;
+                // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
+                const PixelRect& b = setup.box;
+                if (b.x0 < rect.x0 || b.y0 < rect.y0 || b.x1 > rect.x1 || b.y1 > rect.y1) {
+                    setup = restrictSetup(setup, rect);
+                    if (setup.box.empty()) continue;
+                }
+                planes.baseX = head.baseX;
+                planes.baseY = head.baseY;
+                std::memcpy(planes.q, head.q, sizeof head.q);
+                if constexpr (n > 0) {
+                    const std::byte* rest = record + sizeof head;
+                    std::memcpy(planes.l1, rest, kWeightBytes);
+                    rest += kWeightBytes;
+                    std::memcpy(planes.a0, rest, n);
+                    std::memcpy(planes.d1, rest + n, n);
+                    std::memcpy(planes.d2, rest + 2 * n, n);
+                }
+                fragments += raster(setup, planes);
+            }
+        });
+    }
+    return fragments;
+}
 
 }  // namespace facet::detail

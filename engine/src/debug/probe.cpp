@@ -67,14 +67,13 @@ RasterizeFn pickProbe(Interp interp) {
 struct BinCounter {
     std::uint32_t* perTile;
     int tilesX;
-};
 
-std::size_t countBinned(void* context, const CoverageSetup& setup, const Planes&) {
-    const BinCounter& c = *static_cast<const BinCounter*>(context);
-    const int tile = setup.box.y0 / kTileSize * c.tilesX + setup.box.x0 / kTileSize;
-    ++c.perTile[tile];  // one thread owns a tile: no race
-    return 0;
-}
+    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+        const int tile = setup.box.y0 / kTileSize * tilesX + setup.box.x0 / kTileSize;
+        ++perTile[tile];  // one thread owns a tile: no race
+        return 0;
+    }
+};
 
 int clampedBits(const RenderSettings& s) {
     return std::clamp(s.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
@@ -119,10 +118,9 @@ void countBinLoad(TileRenderer& tiles, const DrawInput& in, const RenderSettings
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     perTile.assign(static_cast<std::size_t>(std::max(0, tilesX * tilesY)), 0);
     if (width <= 0 || height <= 0) return;
-    BinCounter counter{perTile.data(), tilesX};
     RenderStats stats;
-    tiles.draw(in, VaryingLayout{}, settings.cullBackFaces, width, height, &countBinned, &counter,
-               resolveThreads(settings.threads), clampedBits(settings), stats);
+    tiles.draw(drawJob(in, VaryingLayout{}, settings, width, height),
+               BinCounter{perTile.data(), tilesX}, resolveThreads(settings.threads), stats);
 }
 
 }  // namespace facet::detail

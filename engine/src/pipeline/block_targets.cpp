@@ -17,8 +17,9 @@
 HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
-RasterizeFn blockLoopOf(const VariantKey& key) {
-    return vectorLoopOf(key, [](auto variant) { return &rasterizeBlocks<decltype(variant)>; });
+PixelLoopFn blockLoopOf(const VariantKey& key) {
+    return vectorLoopOf<PixelLoopFn>(
+        key, [](auto variant) { return &rasterizeBlocks<decltype(variant)>; });
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE
@@ -29,7 +30,7 @@ namespace facet::detail {
 
 HWY_EXPORT(blockLoopOf);
 
-RasterizeFn blockLoop(const VariantKey& key) {
+PixelLoopFn blockLoop(const VariantKey& key) {
     if (!spanLoopsEnabled()) return nullptr;
     return HWY_DYNAMIC_DISPATCH(blockLoopOf)(key);
 }

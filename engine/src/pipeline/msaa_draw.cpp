@@ -10,12 +10,14 @@ void drawMsaaTriangles(TileRenderer& tiles, const VariantKey& key, const DrawInp
                        Framebuffer& samples, int count, int width, int height, int subdivision,
                        int threads, int subPixelBits, RenderStats& stats) {
     // The SIMD target, chosen once per draw.
-    MsaaContext ctx = MsaaContext::make(samples, constants, subdivision, count, msaaSpanLoop(key));
+    const MsaaContext ctx =
+        MsaaContext::make(samples, constants, subdivision, count, msaaSpanLoop(key));
     dispatch(key, [&](auto variant) {
         using V = decltype(variant);
-        tiles.draw(input, V::kLayout, settings.cullBackFaces, width, height,
-                   &rasterizeMsaaTriangle<V>, &ctx, threads, subPixelBits, stats,
-                   SamplePattern::kReach);
+        DrawJob job = drawJob(input, V::kLayout, settings, width, height);
+        job.subPixelBits = subPixelBits;
+        job.sampleReach = SamplePattern::kReach;
+        tiles.draw(job, MsaaRaster<V>{ctx}, threads, stats);
     });
 }
 

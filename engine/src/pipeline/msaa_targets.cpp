@@ -17,8 +17,9 @@
 HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
-RasterizeFn msaaLoopOf(const VariantKey& key) {
-    return vectorLoopOf(key, [](auto variant) { return &rasterizeMsaaSpans<decltype(variant)>; });
+MsaaLoopFn msaaLoopOf(const VariantKey& key) {
+    return vectorLoopOf<MsaaLoopFn>(
+        key, [](auto variant) { return &rasterizeMsaaSpans<decltype(variant)>; });
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE
@@ -29,7 +30,7 @@ namespace facet::detail {
 
 HWY_EXPORT(msaaLoopOf);
 
-RasterizeFn msaaSpanLoop(const VariantKey& key) {
+MsaaLoopFn msaaSpanLoop(const VariantKey& key) {
     if (!spanLoopsEnabled()) return nullptr;
     return HWY_DYNAMIC_DISPATCH(msaaLoopOf)(key);
 }

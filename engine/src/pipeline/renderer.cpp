@@ -63,8 +63,11 @@ struct Renderer::Impl {
     RenderStats renderView(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                            Framebuffer& frame, DrawInput* input = nullptr);
 
-    /// draw() (facet/advanced/draw.hpp) on a frame already checked.
-    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
+    /// draw() (facet/advanced/draw.hpp) on a frame already checked. With `clear` (a draw that
+    /// clearsInTiles()), the frame's old contents do not matter: the tile renderer clears each tile
+    /// to that colour right before drawing into it.
+    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame,
+                     const std::uint32_t* clear = nullptr);
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
@@ -78,6 +81,18 @@ namespace {
 struct CoverageCounts {
     std::uint16_t* counts;
     int width;
+
+    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+        std::size_t covered = 0;
+        forEachCovered(setup, [&](int x, int y) {
+            ++covered;
+            std::uint16_t& n =
+                counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                       static_cast<std::size_t>(x)];
+            if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+        });
+        return covered;
+    }
 };
 
 /// Counts covered samples instead (multisampling): `counts` in the per-sample buffer's layout.
@@ -85,37 +100,30 @@ struct SampleCounts {
     std::uint16_t* counts;
     int width;  ///< of the per-sample buffer
     SamplePattern pattern;
+
+    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+        const SamplePattern& sp = pattern;
+        std::size_t covered = 0;
+        forEachCoveredSamples(
+            setup, sp, [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
+                ++covered;
+                const std::size_t first =
+                    static_cast<std::size_t>(y * sp.block.y) * static_cast<std::size_t>(width) +
+                    static_cast<std::size_t>(x * sp.block.x);
+                for (int j = 0; j < sp.count; ++j) {
+                    if (!(mask & (1u << j))) continue;
+                    std::uint16_t& n = counts[first + sp.at(j, width)];
+                    if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
+                }
+            });
+        return covered;
+    }
 };
 
-std::size_t countSamples(void* context, const CoverageSetup& setup, const Planes&) {
-    const SampleCounts& c = *static_cast<const SampleCounts*>(context);
-    const SamplePattern& sp = c.pattern;
-    std::size_t covered = 0;
-    forEachCoveredSamples(setup, sp, [&](int x, int y, const std::int64_t(&)[3], unsigned mask) {
-        ++covered;
-        const std::size_t first =
-            static_cast<std::size_t>(y * sp.block.y) * static_cast<std::size_t>(c.width) +
-            static_cast<std::size_t>(x * sp.block.x);
-        for (int j = 0; j < sp.count; ++j) {
-            if (!(mask & (1u << j))) continue;
-            std::uint16_t& n = c.counts[first + sp.at(j, c.width)];
-            if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
-        }
-    });
-    return covered;
-}
-
-std::size_t countTriangle(void* context, const CoverageSetup& setup, const Planes&) {
-    const CoverageCounts& c = *static_cast<const CoverageCounts*>(context);
-    std::size_t covered = 0;
-    forEachCovered(setup, [&](int x, int y) {
-        ++covered;
-        std::uint16_t& n =
-            c.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) +
-                     static_cast<std::size_t>(x)];
-        if (n != std::numeric_limits<std::uint16_t>::max()) ++n;
-    });
-    return covered;
+/// Whether draw() can clear the frame tile by tile (TileClear): one-sample solid draws, whose
+/// triangles go through the tile renderer straight into the frame.
+bool clearsInTiles(const RenderSettings& s) {
+    return s.mode == DrawMode::Solid && msaaSamples(s.msaa) == 1;
 }
 
 /// Bytes per vertex the draw reads or derives, for --stats.
@@ -157,7 +165,7 @@ Status checkFramebuffer(const Framebuffer& frame, const RenderSettings& settings
 }  // namespace
 
 RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& settings,
-                                 Framebuffer& frame) {
+                                 Framebuffer& frame, const std::uint32_t* clear) {
     RenderStats stats;
     if (frame.width <= 0 || frame.height <= 0) return stats;
     const VariantKey key = variantKey(settings, input);
@@ -167,8 +175,8 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
                                   input.eye, glm::vec3(1.0f)};
     const int subdivision = std::clamp(settings.subdivision, kMinSubdivision, kMaxSubdivision);
     const int threads = resolveThreads(settings.threads);
-    const RasterizeFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
-    const RasterizeFn blocks = blockLoop(key);
+    const PixelLoopFn spans = spanLoop(key);  // the SIMD target, chosen once per draw
+    const PixelLoopFn blocks = blockLoop(key);
     // Multisampling draws triangles into the per-sample buffer, which starts as the frame's
     // pixels and is resolved back into it; lines and points stay one sample (spec §11).
     const int sampleCount = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
@@ -183,10 +191,11 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
             using V = decltype(variant);
             switch (settings.mode) {
                 case DrawMode::Solid: {
-                    RasterContext ctx{&frame, &constants, subdivision, spans, blocks};
-                    tiles.draw(input, V::kLayout, settings.cullBackFaces, frame.width, frame.height,
-                               &rasterizeTriangle<V>, &ctx, threads, clampedSubPixelBits(settings),
-                               stats);
+                    const TriangleRaster<V> raster{
+                        {&frame, &constants, subdivision, spans, blocks}};
+                    const TileClear tileClear{&frame, clear ? *clear : 0u};
+                    tiles.draw(drawJob(input, V::kLayout, settings, frame.width, frame.height),
+                               raster, threads, stats, clear ? &tileClear : nullptr);
                     break;
                 }
                 case DrawMode::Wireframe:
@@ -232,15 +241,16 @@ Status countCoverage(Renderer& renderer, const DrawInput& input, const RenderSet
                   0);
     RenderStats stats;
     if (samples > 1) {
-        SampleCounts ctx{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)};
-        impl.tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height,
-                        &countSamples, &ctx, resolveThreads(settings.threads),
-                        clampedSubPixelBits(settings), stats, SamplePattern::kReach);
+        DrawJob job = drawJob(input, VaryingLayout{}, settings, width, height);
+        job.sampleReach = SamplePattern::kReach;
+        impl.tiles.draw(
+            job,
+            SampleCounts{counts.data(), width * sampleBlock(samples).x, SamplePattern::of(samples)},
+            resolveThreads(settings.threads), stats);
         return {};
     }
-    CoverageCounts ctx{counts.data(), width};
-    impl.tiles.draw(input, VaryingLayout{}, settings.cullBackFaces, width, height, &countTriangle,
-                    &ctx, resolveThreads(settings.threads), clampedSubPixelBits(settings), stats);
+    impl.tiles.draw(drawJob(input, VaryingLayout{}, settings, width, height),
+                    CoverageCounts{counts.data(), width}, resolveThreads(settings.threads), stats);
     return {};
 }
 
@@ -319,7 +329,11 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
     Clock::time_point t = Clock::now();
     (void)frame.resize(cam.width, cam.height);  // within the limits: checked by checkFrame
     const int threads = resolveThreads(settings.threads);
-    clearFrame(frame, rgbaFromHex(settings.background), threads);
+    const std::uint32_t background = rgbaFromHex(settings.background);
+    // A one-sample solid draw clears each tile right before its triangles, while it is in
+    // cache; the other draws read or keep the frame around their triangles: cleared first.
+    const bool tileClear = clearsInTiles(settings);
+    if (!tileClear) clearFrame(frame, background, threads);
     const double clearMs = msSince(t);
 
     // Vertex stage: only the streams the settings need.
@@ -332,7 +346,7 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
     if (inputOut) *inputOut = input;
 
     // The draw, then the passes after it.
-    RenderStats stats = draw(input, settings, frame);
+    RenderStats stats = draw(input, settings, frame, tileClear ? &background : nullptr);
     stats.clearMs = clearMs;
     stats.vertexMs = vertexMs;
     stats.rasterMs = msSince(t);

@@ -16,8 +16,9 @@
 HWY_BEFORE_NAMESPACE();
 namespace facet::detail::HWY_NAMESPACE {
 
-RasterizeFn spanLoopOf(const VariantKey& key) {
-    return vectorLoopOf(key, [](auto variant) { return &rasterizeSpans<decltype(variant)>; });
+PixelLoopFn spanLoopOf(const VariantKey& key) {
+    return vectorLoopOf<PixelLoopFn>(
+        key, [](auto variant) { return &rasterizeSpans<decltype(variant)>; });
 }
 
 const char* targetName() {
@@ -42,7 +43,7 @@ bool spanLoopsEnabled() {
     return gSpanLoops.load(std::memory_order_relaxed);
 }
 
-RasterizeFn spanLoop(const VariantKey& key) {
+PixelLoopFn spanLoop(const VariantKey& key) {
     if (!spanLoopsEnabled()) return nullptr;
     return HWY_DYNAMIC_DISPATCH(spanLoopOf)(key);
 }

@@ -7,6 +7,7 @@
 
 #include "frontend/front_end.hpp"
 #include "pipeline/variants.hpp"
+#include "shading/msaa_loop.hpp"
 #include "shading/span_loop.hpp"
 
 namespace facet::detail {
@@ -14,15 +15,15 @@ namespace facet::detail {
 /// The span loop of `key`'s variant for the best SIMD target this CPU has (Highway's run-time
 /// choice, which tests may restrict with hwy::SetSupportedTargetsForTest); null when the
 /// variant has none (subdivided interpolation, trilinear filtering).
-RasterizeFn spanLoop(const VariantKey& key);
+PixelLoopFn spanLoop(const VariantKey& key);
 
 /// The block loop (small triangles, span_loop-inl.hpp) of `key`'s variant for the same target
 /// as spanLoop(); null exactly when spanLoop() is.
-RasterizeFn blockLoop(const VariantKey& key);
+PixelLoopFn blockLoop(const VariantKey& key);
 
-/// The multisampled span loop (msaa_loop-inl.hpp; its context an MsaaContext) of `key`'s
+/// The multisampled span loop (msaa_loop-inl.hpp) of `key`'s
 /// variant for the same target as spanLoop(); null when the variant has none.
-RasterizeFn msaaSpanLoop(const VariantKey& key);
+MsaaLoopFn msaaSpanLoop(const VariantKey& key);
 
 /// The name of the SIMD target spanLoop() picks now, e.g. "AVX2".
 const char* spanTarget();
@@ -41,9 +42,9 @@ bool spanLoopsEnabled();
 
 /// What `pick(variant)` returns for `key`'s variant, called only for variants with vector loops
 /// (kHasSpanLoop); null for the others. Each *_targets.cpp picks its loop with it.
-template <class Pick>
-RasterizeFn vectorLoopOf(const VariantKey& key, Pick pick) {
-    RasterizeFn loop = nullptr;
+template <class Fn, class Pick>
+Fn vectorLoopOf(const VariantKey& key, Pick pick) {
+    Fn loop = nullptr;
     dispatch(key, [&](auto variant) {
         if constexpr (kHasSpanLoop<decltype(variant)>) loop = pick(variant);
     });
@@ -52,13 +53,13 @@ RasterizeFn vectorLoopOf(const VariantKey& key, Pick pick) {
 
 /// spanLoop() for a compile-time Variant.
 template <class V>
-RasterizeFn spanLoopFor() {
+PixelLoopFn spanLoopFor() {
     return spanLoop({V::kShader, V::kInterp, V::kLayout, V::kFilter, V::kCombine});
 }
 
 /// blockLoop() for a compile-time Variant.
 template <class V>
-RasterizeFn blockLoopFor() {
+PixelLoopFn blockLoopFor() {
     return blockLoop({V::kShader, V::kInterp, V::kLayout, V::kFilter, V::kCombine});
 }
 

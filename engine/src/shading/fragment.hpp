@@ -57,6 +57,13 @@ struct DrawConstants {
     std::uint32_t basePacked = packColor(baseColor);
 };
 
+struct RasterContext;
+
+/// A vector pixel loop of one variant and SIMD target (span_loop-inl.hpp): covers `setup` and
+/// shades with `planes` into ctx.fb; returns the pixels covered. Picked once per draw.
+using PixelLoopFn = std::size_t (*)(const RasterContext& ctx, const CoverageSetup& setup,
+                                    const Planes& planes);
+
 /// What a variant's triangle rasterizer needs besides the triangle; shared, read-only, by the
 /// threads that rasterize disjoint tiles.
 struct RasterContext {
@@ -64,9 +71,9 @@ struct RasterContext {
     const DrawConstants* constants;
     int subdivision;  ///< N of Interp::Subdivided
     /// The variant's span loop for the SIMD target picked for this draw; null: scalar only.
-    RasterizeFn spans = nullptr;
+    PixelLoopFn spans = nullptr;
     /// The variant's block loop (small triangles) for the same target; null: scalar only.
-    RasterizeFn blocks = nullptr;
+    PixelLoopFn blocks = nullptr;
 };
 
 /// Rounds a colour to 8 bits per channel as spec §5 says (facet::toByte); NaN becomes 0.

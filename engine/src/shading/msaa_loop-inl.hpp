@@ -73,12 +73,11 @@ struct SampleRow {
 /// The multisampled loop of an affine or perspective variant V without derivatives; returns
 /// the pixels with a covered sample, as rasterizeMsaa does.
 template <class V>
-HWY_NOINLINE std::size_t rasterizeMsaaSpans(void* context, const CoverageSetup& setup,
+HWY_NOINLINE std::size_t rasterizeMsaaSpans(const MsaaContext& ctx, const CoverageSetup& setup,
                                             const Planes& p) {
     static_assert(kHasSpanLoop<V>);
     const Df d;
     const Du du;
-    const MsaaContext& ctx = *static_cast<const MsaaContext*>(context);
     const SamplePattern& sp = ctx.pattern;
     Framebuffer& fb = *ctx.samples;
     const DrawConstants& k = *ctx.constants;

@@ -102,6 +102,13 @@ inline void forEachCoveredSamples(const CoverageSetup& s, const SamplePattern& p
     }
 }
 
+struct MsaaContext;
+
+/// The vector multisampled loop of one variant and SIMD target (msaa_loop-inl.hpp); returns
+/// the pixels with a covered sample. Picked once per draw.
+using MsaaLoopFn = std::size_t (*)(const MsaaContext& ctx, const CoverageSetup& setup,
+                                   const Planes& planes);
+
 /// What the multisampled loop needs besides the triangle; shared, read-only, by the threads.
 struct MsaaContext {
     Framebuffer* samples = nullptr;  ///< the per-sample buffer, SampleBlock layout
@@ -110,11 +117,11 @@ struct MsaaContext {
     SamplePattern pattern;
     std::size_t at[kMaxMsaa] = {};  ///< SamplePattern::at() for this buffer
     /// The vector loop (msaa_loop-inl.hpp) of the draw's variant and SIMD target, or null.
-    RasterizeFn spans = nullptr;
+    MsaaLoopFn spans = nullptr;
 
     /// The context of `count` samples drawing into `samples` (already sized).
     static MsaaContext make(Framebuffer& samples, const DrawConstants& constants, int subdivision,
-                            int count, RasterizeFn spans) {
+                            int count, MsaaLoopFn spans) {
         MsaaContext c{&samples, &constants, subdivision, SamplePattern::of(count), {}, spans};
         for (int k = 0; k < c.pattern.count; ++k) c.at[k] = c.pattern.at(k, samples.width);
         return c;
@@ -123,9 +130,8 @@ struct MsaaContext {
 
 /// The multisampled pixel loop of variant V; returns the pixels with a covered sample.
 template <class V>
-[[gnu::noinline]] std::size_t rasterizeMsaa(void* context, const CoverageSetup& setup,
+[[gnu::noinline]] std::size_t rasterizeMsaa(const MsaaContext& ctx, const CoverageSetup& setup,
                                             const Planes& p) {
-    const MsaaContext& ctx = *static_cast<const MsaaContext*>(context);
     const SamplePattern& sp = ctx.pattern;
     Framebuffer& fb = *ctx.samples;
     const DrawConstants& k = *ctx.constants;
@@ -187,12 +193,23 @@ template <class V>
 /// vector loop of the draw's SIMD target (MsaaContext::spans), the rest the scalar one above,
 /// by the same rule as the one-sample loops (rasterizeTriangle in scalar_loop.hpp).
 template <class V>
-std::size_t rasterizeMsaaTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+[[gnu::always_inline]] inline std::size_t rasterizeMsaaTriangle(const MsaaContext& ctx,
+                                                                const CoverageSetup& setup,
+                                                                const Planes& p) {
     if constexpr (kHasSpanLoop<V>) {
-        const RasterizeFn spans = static_cast<const MsaaContext*>(context)->spans;
-        if (spans && setup.box.x1 - setup.box.x0 >= kNarrowBox) return spans(context, setup, p);
+        if (ctx.spans && setup.box.x1 - setup.box.x0 >= kNarrowBox) return ctx.spans(ctx, setup, p);
     }
-    return rasterizeMsaa<V>(context, setup, p);
+    return rasterizeMsaa<V>(ctx, setup, p);
 }
+
+/// Variant V's multisampled rasterizer as the tile renderer takes it (TileRenderer::draw).
+template <class V>
+struct MsaaRaster {
+    MsaaContext ctx;
+
+    std::size_t operator()(const CoverageSetup& setup, const Planes& p) const {
+        return rasterizeMsaaTriangle<V>(ctx, setup, p);
+    }
+};
 
 }  // namespace facet::detail

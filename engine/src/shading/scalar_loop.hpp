@@ -130,9 +130,8 @@ inline glm::vec3 shadeAt(const Planes& p, const DrawConstants& k, float dx, floa
 
 /// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
 template <class V>
-[[gnu::noinline]] std::size_t rasterizeScalar(void* context, const CoverageSetup& setup,
+[[gnu::noinline]] std::size_t rasterizeScalar(const RasterContext& ctx, const CoverageSetup& setup,
                                               const Planes& p) {
-    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
     SubdividedSpan span;
@@ -157,21 +156,34 @@ template <class V>
 /// The triangle rasterizer of variant V: affine or perspective triangles take a vector loop of
 /// the draw's SIMD target, the span loop for wide boxes (RasterContext::spans) and the block loop
 /// for narrow ones (RasterContext::blocks) when not tiny and its 32-bit edge values suffice; the
-/// rest take the scalar loop. Each is kept out of line so that it is optimised (and its shading
-/// inlined) on its own.
+/// rest take the scalar loop. Each loop is kept out of line so that it is optimised (and its
+/// shading inlined) on its own; this choice is inlined into the tile loop (GCC 12 kept it out of
+/// line otherwise: one more call per triangle).
 template <class V>
-std::size_t rasterizeTriangle(void* context, const CoverageSetup& setup, const Planes& p) {
+[[gnu::always_inline]] inline std::size_t rasterizeTriangle(const RasterContext& ctx,
+                                                            const CoverageSetup& setup,
+                                                            const Planes& p) {
     if constexpr (kHasSpanLoop<V>) {
-        const RasterContext& ctx = *static_cast<const RasterContext*>(context);
         if (setup.box.x1 - setup.box.x0 >= kNarrowBox) {
-            if (ctx.spans) return ctx.spans(context, setup, p);
+            if (ctx.spans) return ctx.spans(ctx, setup, p);
         } else if (ctx.blocks &&
                    setup.box.x1 - setup.box.x0 + setup.box.y1 - setup.box.y0 + 2 >= kTinyBox &&
                    fitsBlockLoop(setup)) {
-            return ctx.blocks(context, setup, p);
+            return ctx.blocks(ctx, setup, p);
         }
     }
-    return rasterizeScalar<V>(context, setup, p);
+    return rasterizeScalar<V>(ctx, setup, p);
 }
+
+/// Variant V's rasterizer as the tile renderer takes it (TileRenderer::draw): the draw's state
+/// by value and a call per triangle that the tile loop inlines.
+template <class V>
+struct TriangleRaster {
+    RasterContext ctx;
+
+    std::size_t operator()(const CoverageSetup& setup, const Planes& p) const {
+        return rasterizeTriangle<V>(ctx, setup, p);
+    }
+};
 
 }  // namespace facet::detail

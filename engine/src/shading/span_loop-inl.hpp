@@ -173,12 +173,11 @@ HWY_INLINE void shadeLanes(const VecF* a, const DrawConstants& k, unsigned live,
 /// The triangle loop of an affine or perspective variant V without derivatives, for wide boxes:
 /// row spans.
 template <class V>
-HWY_NOINLINE std::size_t rasterizeSpans(void* context, const CoverageSetup& setup,
+HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const CoverageSetup& setup,
                                         const Planes& p) {
     static_assert(kHasSpanLoop<V>);
     const Df d;
     const Du du;
-    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
@@ -338,12 +337,11 @@ HWY_INLINE void storeBlockRows([[maybe_unused]] VecF depth, [[maybe_unused]] Vec
 /// an empty block is skipped after it; depth steps dx instead of converting it per block, and
 /// reuses the row's q₂·dy.
 template <class V>
-HWY_NOINLINE std::size_t rasterizeBlocks(void* context, const CoverageSetup& setup,
+HWY_NOINLINE std::size_t rasterizeBlocks(const RasterContext& ctx, const CoverageSetup& setup,
                                          const Planes& p) {
     static_assert(kHasSpanLoop<V>);
     const Df d;
     const Di di;
-    const RasterContext& ctx = *static_cast<const RasterContext*>(context);
     Framebuffer& fb = *ctx.fb;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
