@@ -14,7 +14,8 @@
 
 #include "accuracy/accuracy_methods.hpp"
 #include "accuracy/run_output.hpp"
-#include "commands.hpp"
+#include "accuracy_command.hpp"
+#include "exit_code.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/ground_truth.hpp"
 #include "facet/evaluation/image_metrics.hpp"

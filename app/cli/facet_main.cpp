@@ -9,8 +9,15 @@
 
 #include <unistd.h>
 
-#include "commands.hpp"
+#include "accuracy_command.hpp"
+#include "bench_command.hpp"
+#include "exit_code.hpp"
 #include "facet/version.hpp"
+#include "generate_command.hpp"
+#include "gl_render_command.hpp"
+#include "inspect_command.hpp"
+#include "render_command.hpp"
+#include "sweeps_command.hpp"
 
 namespace {
 

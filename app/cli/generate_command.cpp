@@ -5,9 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "commands.hpp"
+#include "exit_code.hpp"
 #include "facet/mesh_io.hpp"
 #include "facet/procedural.hpp"
+#include "generate_command.hpp"
 
 namespace facet::app {
 namespace {

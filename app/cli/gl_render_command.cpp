@@ -8,10 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
+#include "exit_code.hpp"
 #include "facet/image_io.hpp"
 #include "facet/scene_io.hpp"
 #include "gl_context.hpp"
+#include "gl_render_command.hpp"
 #include "gl_renderer.hpp"
 #include "render_options.hpp"
 

@@ -6,10 +6,11 @@
 #include <memory>
 #include <string>
 
-#include "commands.hpp"
+#include "exit_code.hpp"
 #include "facet/evaluation/ground_truth.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/inspect.hpp"
+#include "inspect_command.hpp"
 #include "render_options.hpp"
 
 namespace facet::app {

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "commands.hpp"
+#include "exit_code.hpp"
 #include "facet/image_io.hpp"
 #include "lab/renderer.hpp"
 

@@ -8,13 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
 #include "delayed_progress.hpp"
+#include "exit_code.hpp"
 #include "facet/image_io.hpp"
 #include "facet/render.hpp"
 #include "facet/scene_io.hpp"
 #include "facet/texture.hpp"
 #include "lab_render.hpp"
+#include "render_command.hpp"
 #include "render_options.hpp"
 
 namespace facet::app {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <utility>
 
-#include "commands.hpp"
+#include "exit_code.hpp"
 #include "facet/camera.hpp"
 #include "facet/evaluation/frame_times.hpp"
 #include "facet/image_io.hpp"

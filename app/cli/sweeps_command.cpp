@@ -20,10 +20,11 @@
 #include "accuracy/sweep_subpixel.hpp"
 #include "accuracy/sweep_table.hpp"
 #include "accuracy/sweep_view_angle.hpp"
-#include "commands.hpp"
+#include "exit_code.hpp"
 #include "report/accuracy_report.hpp"
 #include "report/bench_chart.hpp"
 #include "report/machine_info.hpp"
+#include "sweeps_command.hpp"
 
 namespace facet::app {
 namespace {

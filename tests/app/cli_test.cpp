@@ -241,7 +241,7 @@ TEST_F(Cli, StatsReportVaryingsAndBytesPerVertex) {
     // A depth image needs no normals even with lighting on.
     EXPECT_NE(stats("--shader depth --lighting phong").find("per vertex: 28 bytes; varyings: 1 "),
               std::string::npos);
-    // A mesh without colours, unlit, interpolates depth only (it opens lit: conventions §9).
+    // A mesh without colours, unlit, interpolates depth only (it opens lit: spec §9).
     std::ofstream(out("plain.scene")) << FACET_TEST_DATA << "/off_no_colors.off\n0 0 -4\n0 0 0\n"
                                       << "0 -1 0\n200\n64 48\n1\n0 0 -8 1\n0.5 0.5 0.5 1\n";
     const Outcome r =
@@ -668,7 +668,7 @@ TEST_F(Cli, ABareMeshRendersLitAndItsSavedSceneRendersTheSameBytes) {
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_NE(r.out.find("lighting gouraud"), std::string::npos) << r.out;  // lit by default
     EXPECT_EQ(pngSize(out("a.png")), std::make_pair(640, 400));
-    // The saved scene opens by the same rule as the mesh (conventions §9): with no options it
+    // The saved scene opens by the same rule as the mesh (spec §9): with no options it
     // renders the same bytes.
     r = run("render " + out("teapot.scene") + " -o " + out("b.png"));
     ASSERT_EQ(r.exitCode, 0) << r.out;
@@ -678,7 +678,7 @@ TEST_F(Cli, ABareMeshRendersLitAndItsSavedSceneRendersTheSameBytes) {
     EXPECT_NE(text.find("\n640 400\n"), std::string::npos) << text;
 }
 
-// One set of defaults (conventions §9, applyOpeningSettings): Spot's scene names a texture and
+// One set of defaults (spec §9, applyOpeningSettings): Spot's scene names a texture and
 // its mesh has no colours, so it opens textured, combined and lit, as the viewer opens it; a
 // course scene (coloured mesh) stays unlit painter. Options override each part.
 TEST_F(Cli, ScenesOpenWithTheDefaultsOfTheirContents) {
@@ -793,7 +793,7 @@ TEST_F(Cli, OutputIsAPngFileOrStandardOutput) {
     EXPECT_FALSE(fs::exists("-"));
 }
 
-// A Z-up model (Nefertiti, a scan) is framed standing with --up z (conventions §3b): the written
+// A Z-up model (Nefertiti, a scan) is framed standing with --up z (spec §3b): the written
 // scene's y hint is -Z, and the image differs from the default +Y framing; --up on a .scene has
 // no effect and is refused naming what it needs; --eye and --look replace the camera's pose.
 TEST_F(Cli, UpEyeAndLookFrameABareMesh) {

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <CLI/CLI.hpp>
 
-#include "commands.hpp"
+#include "exit_code.hpp"
 #include "options.hpp"
 #include "render_option_table.hpp"
 #include "render_options.hpp"

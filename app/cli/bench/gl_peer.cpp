@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "../commands.hpp"
+#include "../exit_code.hpp"
 #include "bench_suite.hpp"
 #include "bench_timing.hpp"
 #include "facet/image_io.hpp"

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "gl_peer.hpp"
+#include "gl_peer_process.hpp"
 
 extern char** environ;
 
