@@ -123,17 +123,6 @@ void sortByTile(TileRenderer::Slice& s) {
         order[s.cursor[entries[i].tile]++] = entries[i].offset;
 }
 
-/// Clears `rect` of the frame to the clear colour and kEmptyDepth.
-void clearRect(const TileClear& clear, const PixelRect& rect) {
-    Framebuffer& fb = *clear.frame;
-    const auto n = static_cast<std::ptrdiff_t>(rect.x1 - rect.x0 + 1);
-    for (int y = rect.y0; y <= rect.y1; ++y) {
-        const auto at = static_cast<std::ptrdiff_t>(fb.index(rect.x0, y));
-        std::fill_n(fb.color.begin() + at, n, clear.color);
-        std::fill_n(fb.depth.begin() + at, n, kEmptyDepth);
-    }
-}
-
 using Clock = std::chrono::steady_clock;
 
 double msBetween(Clock::time_point a, Clock::time_point b) {
@@ -147,16 +136,12 @@ int resolveThreads(int requested) {
     return std::max(1, omp_get_num_procs());
 }
 
-void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer,
-                       const TileClear* clear) {
+void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer) {
     const DrawInput& in = *job.in;
     const int width = job.width, height = job.height;
     const std::size_t triangles = in.indices.size() / 3;
     if (width <= 0 || height <= 0) return;
-    if (triangles == 0) {
-        if (clear) clearRect(*clear, {0, 0, width - 1, height - 1});
-        return;
-    }
+    if (triangles == 0) return;
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     const int tiles = tilesX * tilesY;
@@ -236,11 +221,6 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
                     slice.stats.binningMs += msBetween(t1, t2);
                 } else if (k > 0) {
                     const int tile = t - slices;
-                    if (clear && k == 1) {  // every tile has a task in every step
-                        const int x0 = tile % tilesX * kTileSize, y0 = tile / tilesX * kTileSize;
-                        clearRect(*clear, {x0, y0, std::min(x0 + kTileSize, width) - 1,
-                                           std::min(y0 + kTileSize, height) - 1});
-                    }
                     fragments += drawer.draw(*this, drawer.raster, {tile, consume, n});
                 }
             }

@@ -79,15 +79,6 @@ void withVaryingCount(int n, F&& f) {
     withVaryingCount(n, f, std::make_integer_sequence<int, kMaxVaryings + 1>{});
 }
 
-/// A frame the tile renderer clears itself, tile by tile, right before the tile's first
-/// triangles are drawn (so the clear's writes are still in the core's cache when the triangles
-/// test depth and write there, instead of a pass of its own over the whole frame first): colour
-/// `color`, depth kEmptyDepth. The frame must be the draw's size.
-struct TileClear {
-    Framebuffer* frame = nullptr;
-    std::uint32_t color = 0;
-};
-
 /// Runs the triangle pipeline on several threads; keeps its bins between draws so a steady
 /// frame allocates nothing.
 class TileRenderer {
@@ -98,13 +89,10 @@ class TileRenderer {
     /// struct of the per-draw state with a call operator): the tile loop is instantiated with
     /// it, so the per-triangle call is a direct one the compiler may inline. It must be safe to
     /// call from several threads for disjoint tiles. Adds the front end's counters, its and
-    /// binning's times and the fragments to `stats`. With `clear`, every tile of that frame is
-    /// cleared just before its first triangles (and every pixel is cleared even when no triangle
-    /// is drawn).
+    /// binning's times and the fragments to `stats`.
     template <class Raster>
-    void draw(const DrawJob& job, const Raster& raster, int threads, RenderStats& stats,
-              const TileClear* clear = nullptr) {
-        run(job, threads, stats, {&drawTileWith<Raster>, &raster}, clear);
+    void draw(const DrawJob& job, const Raster& raster, int threads, RenderStats& stats) {
+        run(job, threads, stats, {&drawTileWith<Raster>, &raster});
     }
 
     /// A record's storage: cache-line aligned, records packed at multiples of 8 bytes (80
@@ -150,8 +138,7 @@ class TileRenderer {
 
   private:
     /// The draw, its threads and batches (tiles.cpp); `drawer` rasterizes one tile.
-    void run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer,
-             const TileClear* clear);
+    void run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer);
 
     template <class Raster>
     static std::size_t drawTileWith(const TileRenderer& self, const void* raster,
