@@ -40,7 +40,7 @@ inline DrawJob drawJob(const DrawInput& in, const VaryingLayout& layout,
     job.cull = settings.cullBackFaces;
     job.width = width;
     job.height = height;
-    job.subPixelBits = std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
+    job.subPixelBits = clampedSubPixelBits(settings);
     return job;
 }
 

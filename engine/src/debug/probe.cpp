@@ -75,10 +75,6 @@ struct BinCounter {
     }
 };
 
-int clampedBits(const RenderSettings& s) {
-    return std::clamp(s.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
-}
-
 }  // namespace
 
 void DrawProbe::run(const DrawInput& in, const RenderSettings& settings, int width, int height,
@@ -108,7 +104,7 @@ void DrawProbe::run(const DrawInput& in, const RenderSettings& settings, int wid
     for (std::size_t t = 0; t < triangles; ++t) {
         context.triangle = static_cast<std::uint32_t>(t);
         drawTriangles(in, layout, settings.cullBackFaces, width, height, t, t + 1, fn, &context,
-                      stats, clampedBits(settings));
+                      stats, clampedSubPixelBits(settings));
     }
 }
 

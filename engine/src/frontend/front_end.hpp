@@ -8,6 +8,7 @@
 // and guard-band tests) is ScreenSpace::vertex() below, which the tile renderer runs once per
 // vertex before the triangles.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -160,6 +161,12 @@ LaneSetupFn laneSetup();
 /// Turns the lanes stage off (every triangle takes the scalar front end, the reference it must
 /// equal) or back on, for the whole process. Not for use while a draw runs.
 void enableLaneSetup(bool enabled);
+
+/// The sub-pixel grid a draw snaps to: settings.subPixelBits clamped to what the engine
+/// supports (kMinSubPixelBits … kMaxSubPixelBits). The one place that clamps it.
+inline int clampedSubPixelBits(const RenderSettings& settings) {
+    return std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
+}
 
 /// One draw as the front end sees it: the inputs that stay the same for all its triangles.
 struct DrawJob {

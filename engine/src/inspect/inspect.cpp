@@ -302,7 +302,7 @@ PixelHistory inspectPixel(const Scene& scene, const RenderSettings& settings, in
     const VariantKey key = variantKey(settings, input);
     const DrawConstants constants{input.texture ? input.texture : &whiteTexture(), input.lighting,
                                   input.eye, glm::vec3(1.0f)};
-    const int bits = std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
+    const int bits = clampedSubPixelBits(settings);
     const SnapGrid grid = SnapGrid::ofBits(bits);
     Probe probe{&input,
                 scene.mesh.get(),

@@ -136,10 +136,6 @@ double msSince(Clock::time_point& t) {
     return ms;
 }
 
-int clampedSubPixelBits(const RenderSettings& settings) {
-    return std::clamp(settings.subPixelBits, kMinSubPixelBits, kMaxSubPixelBits);
-}
-
 /// A frame draw() may draw into: a size checkImageSize accepts, and both planes that size.
 Status checkFramebuffer(const Framebuffer& frame, const RenderSettings& settings) {
     if (Status st = checkImageSize(frame.width, frame.height, 1, settings.msaa); !st) return st;
