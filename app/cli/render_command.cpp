@@ -88,6 +88,7 @@ int runRender(const RenderOptions& o, const std::string& rendererName) {
                      stats.trianglesRasterized);
         std::fprintf(info, "lines: %zu, points: %zu, normals: %zu, fragments: %zu\n",
                      stats.linesDrawn, stats.pointsDrawn, stats.normalsDrawn, stats.fragments);
+        std::fprintf(info, "hierarchical depth: %zu triangle parts rejected\n", stats.hiZTriangles);
         std::fprintf(info, "per vertex: %zu bytes; varyings: %d floats (%.*s)\n", stats.vertexBytes,
                      stats.varyings, static_cast<int>(stats.varyingNames.size()),
                      stats.varyingNames.data());

@@ -358,7 +358,8 @@ TEST(BlockLoop, CoversExactlyTheScalarPixelsOnEveryTarget) {
                         edgeCentres += e == 0 || e == -1 ? 1 : 0;
                     }
             detail::RasterContext ctx{&fb, &constants, 16, nullptr, nullptr};
-            ASSERT_EQ(simple(ctx, setup, planes), count) << hwy::TargetName(target);
+            ASSERT_EQ(simple(ctx, setup, planes, detail::PixelTarget::frame(fb)), count)
+                << hwy::TargetName(target);
             std::size_t wrong = 0;
             for (std::size_t i = 0; i < covered.size(); ++i)
                 wrong += (fb.color[i] == kWhite) != (covered[i] != 0) ? 1 : 0;
@@ -370,7 +371,8 @@ TEST(BlockLoop, CoversExactlyTheScalarPixelsOnEveryTarget) {
             for (int y = 0; y < fb.height; ++y)
                 for (int x = 0; x < fb.width; ++x)
                     fb.depth[fb.index(x, y)] = (x + y) % 2 == 0 ? 2.0f : 3.0f;
-            ASSERT_EQ(painter(ctx, setup, planes), count) << hwy::TargetName(target);
+            ASSERT_EQ(painter(ctx, setup, planes, detail::PixelTarget::frame(fb)), count)
+                << hwy::TargetName(target);
             for (int y = 0; y < fb.height; ++y)
                 for (int x = 0; x < fb.width; ++x) {
                     const std::size_t i = fb.index(x, y);

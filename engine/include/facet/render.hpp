@@ -38,8 +38,11 @@ struct RenderStats {
     std::size_t pointsDrawn = 0;          ///< vertex squares drawn
     std::size_t normalsDrawn = 0;         ///< normal segments drawn (showNormals)
     std::size_t fragments = 0;            ///< pixels that passed coverage (before the depth test)
-    float depthNear = 0.0f;               ///< smallest depth left in the frame (depth shader)
-    float depthFar = 0.0f;                ///< largest depth left in the frame (depth shader)
+    /// Triangle parts (a triangle in one 64×64 tile) rejected by hierarchical depth, wholly
+    /// behind what the tile holds; their pixels are not visited, so not in `fragments`.
+    std::size_t hiZTriangles = 0;
+    float depthNear = 0.0f;       ///< smallest depth left in the frame (depth shader)
+    float depthFar = 0.0f;        ///< largest depth left in the frame (depth shader)
     std::size_t vertexBytes = 0;  ///< bytes per vertex the draw read or derived (clip included)
     int varyings = 0;             ///< floats interpolated per fragment, depth (1/w) included
     /// Wall-clock time of render()'s stages, in ms (clocked per draw, never per pixel):

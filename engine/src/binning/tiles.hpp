@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "binning/tile_buffer.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/settings.hpp"
 #include "frontend/front_end.hpp"
@@ -79,6 +80,23 @@ void withVaryingCount(int n, F&& f) {
     withVaryingCount(n, f, std::make_integer_sequence<int, kMaxVaryings + 1>{});
 }
 
+/// The frame a one-sample solid draw writes (TileRenderer::draw): where each tile's PixelTarget
+/// points, whether the frame is cleared first, and whether tiles keep a hierarchical depth.
+struct TileFrame {
+    Framebuffer* fb = nullptr;  ///< null: the raster writes elsewhere and ignores its target
+    /// Clear the frame to `background` (depth kEmptyDepth) before drawing: in each tile's buffer
+    /// when the draw is one batch (see run()), else in a pass over the frame first.
+    bool clear = false;
+    std::uint32_t background = 0;
+    bool hiZ = false;  ///< the draw tests depth (LESS): keep a far bound per tile
+};
+
+/// Switches the per-thread tile buffer (on by default) off or on, for tests that compare the
+/// image drawn with and without it; not thread-safe against draws in progress.
+void enableTileBuffer(bool enabled);
+/// Switches hierarchical depth (on by default) off or on, for the same kind of tests.
+void enableHiZ(bool enabled);
+
 /// Runs the triangle pipeline on several threads; keeps its bins between draws so a steady
 /// frame allocates nothing.
 class TileRenderer {
@@ -89,10 +107,14 @@ class TileRenderer {
     /// struct of the per-draw state with a call operator): the tile loop is instantiated with
     /// it, so the per-triangle call is a direct one the compiler may inline. It must be safe to
     /// call from several threads for disjoint tiles. Adds the front end's counters, its and
-    /// binning's times and the fragments to `stats`.
+    /// binning's times and the fragments to `stats`. `raster` is called as
+    /// raster(setup, planes, target): `target` is where the tile's pixels go (`frame`'s pixels,
+    /// or a per-thread tile buffer written to the frame after the tile), with the tile's
+    /// hierarchical depth when frame.hiZ.
     template <class Raster>
-    void draw(const DrawJob& job, const Raster& raster, int threads, RenderStats& stats) {
-        run(job, threads, stats, {&drawTileWith<Raster>, &raster});
+    void draw(const DrawJob& job, const Raster& raster, int threads, RenderStats& stats,
+              const TileFrame& frame = {}) {
+        run(job, threads, stats, {&drawTileWith<Raster>, &raster}, frame);
     }
 
     /// A record's storage: cache-line aligned, records packed at multiples of 8 bytes (80
@@ -128,6 +150,12 @@ class TileRenderer {
     struct TileTask {
         int tile = 0;
         std::size_t first = 0, count = 0;
+        const PixelTarget* target = nullptr;  ///< where the tile's pixels go (never null)
+    };
+    /// A thread's tile buffer: a 64×64 tile's colour and depth, rows kTileSize apart.
+    struct alignas(64) TileBuffer {
+        std::uint32_t color[kTileSize * kTileSize];
+        float depth[kTileSize * kTileSize];
     };
     /// The tile loop of one rasterizer type, and that rasterizer: called once per tile and
     /// batch (not per triangle), so the type is erased here and nowhere below.
@@ -138,7 +166,14 @@ class TileRenderer {
 
   private:
     /// The draw, its threads and batches (tiles.cpp); `drawer` rasterizes one tile.
-    void run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer);
+    void run(const DrawJob& job, int threads, RenderStats& stats, TileDrawer drawer,
+             const TileFrame& frame);
+
+    /// One tile of a step: its records from slices [first, first + count) drawn into the frame,
+    /// or when `resident` in the thread's tile buffer, cleared first and written to the frame
+    /// after; with the tile's far bound when `hiZ`. Returns the pixels covered.
+    std::size_t drawTile(int tile, std::size_t first, std::size_t count, TileDrawer drawer,
+                         const TileFrame& frame, bool resident, bool hiZ);
 
     template <class Raster>
     static std::size_t drawTileWith(const TileRenderer& self, const void* raster,
@@ -154,6 +189,8 @@ class TileRenderer {
     std::vector<Slice> slices_;           // one set per thread, two when binning overlaps the tiles
     std::vector<ScreenVertex> screen_;    // the vertex pass's output, one per clip position
     std::vector<std::size_t> fragments_;  // per thread
+    std::vector<TileBuffer> buffers_;     // per thread, when the draw is tile-resident
+    std::vector<TileDepth> depths_;       // per tile, the hierarchical depth
     int width_ = 0, height_ = 0, tilesX_ = 0;  // the draw being run
 };
 
@@ -200,7 +237,7 @@ std::size_t TileRenderer::rasterizeTile(const Raster& raster, const TileTask& ta
                     std::memcpy(planes.d1, rest + n, n);
                     std::memcpy(planes.d2, rest + 2 * n, n);
                 }
-                fragments += raster(setup, planes);
+                fragments += raster(setup, planes, *task.target);
             }
         });
     }

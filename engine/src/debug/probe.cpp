@@ -68,7 +68,7 @@ struct BinCounter {
     std::uint32_t* perTile;
     int tilesX;
 
-    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+    std::size_t operator()(const CoverageSetup& setup, const Planes&, const PixelTarget&) const {
         const int tile = setup.box.y0 / kTileSize * tilesX + setup.box.x0 / kTileSize;
         ++perTile[tile];  // one thread owns a tile: no race
         return 0;

@@ -63,8 +63,11 @@ struct Renderer::Impl {
     RenderStats renderView(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                            Framebuffer& frame, DrawInput* input = nullptr);
 
-    /// draw() (facet/advanced/draw.hpp) on a frame already checked.
-    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame);
+    /// draw() (facet/advanced/draw.hpp) on a frame already checked; with `clear`, the frame is
+    /// first cleared to that colour (depth kEmptyDepth): by the tile renderer in each tile when
+    /// it can (TileFrame), else in a pass.
+    RenderStats draw(const DrawInput& input, const RenderSettings& settings, Framebuffer& frame,
+                     const std::uint32_t* clear = nullptr);
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
@@ -79,7 +82,7 @@ struct CoverageCounts {
     std::uint16_t* counts;
     int width;
 
-    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+    std::size_t operator()(const CoverageSetup& setup, const Planes&, const PixelTarget&) const {
         std::size_t covered = 0;
         forEachCovered(setup, [&](int x, int y) {
             ++covered;
@@ -98,7 +101,7 @@ struct SampleCounts {
     int width;  ///< of the per-sample buffer
     SamplePattern pattern;
 
-    std::size_t operator()(const CoverageSetup& setup, const Planes&) const {
+    std::size_t operator()(const CoverageSetup& setup, const Planes&, const PixelTarget&) const {
         const SamplePattern& sp = pattern;
         std::size_t covered = 0;
         forEachCoveredSamples(
@@ -152,7 +155,7 @@ Status checkFramebuffer(const Framebuffer& frame, const RenderSettings& settings
 }  // namespace
 
 RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& settings,
-                                 Framebuffer& frame) {
+                                 Framebuffer& frame, const std::uint32_t* clear) {
     RenderStats stats;
     if (frame.width <= 0 || frame.height <= 0) return stats;
     const VariantKey key = variantKey(settings, input);
@@ -169,6 +172,13 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
     const int sampleCount = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
     const SampleBlock block = sampleBlock(sampleCount);
     Framebuffer& target = sampleCount > 1 ? samples : frame;
+    // The one-sample solid draw clears in its tiles; the others in a pass first.
+    const bool tileClear = settings.mode == DrawMode::Solid && sampleCount == 1;
+    if (clear && !tileClear) {
+        Clock::time_point t = Clock::now();
+        clearFrame(frame, *clear, threads);
+        stats.clearMs += msSince(t);
+    }
     if (sampleCount > 1) {  // Solid mode: triangles only
         expandToSamples(frame, block.x, block.y, samples, threads);
         drawMsaaTriangles(tiles, key, input, settings, constants, samples, sampleCount, frame.width,
@@ -180,8 +190,10 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
                 case DrawMode::Solid: {
                     const TriangleRaster<V> raster{
                         {&frame, &constants, subdivision, spans, blocks}};
+                    const TileFrame pixels{&frame, clear != nullptr, clear ? *clear : 0u,
+                                           depthTested(V::kShader)};
                     tiles.draw(drawJob(input, V::kLayout, settings, frame.width, frame.height),
-                               raster, threads, stats);
+                               raster, threads, stats, pixels);
                     break;
                 }
                 case DrawMode::Wireframe:
@@ -316,10 +328,8 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
     (void)frame.resize(cam.width, cam.height);  // within the limits: checked by checkFrame
     const int threads = resolveThreads(settings.threads);
     const std::uint32_t background = rgbaFromHex(settings.background);
-    // A pass of its own: clearing each tile right before its triangles (while in cache) made
-    // frames slower, timed idle (Spot 1080p at 2 threads 3.2 -> 3.9 ms, the bunny at 720p
-    // 9.0 -> 9.5 ms at 1 thread), though it missed memory half as often.
-    clearFrame(frame, background, threads);
+    // The clear is the draw's (draw() below): a one-batch solid draw clears each tile in a
+    // thread's tile buffer; the others clear the frame in a pass first.
     const double clearMs = msSince(t);
 
     // Vertex stage: only the streams the settings need.
@@ -332,8 +342,8 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
     if (inputOut) *inputOut = input;
 
     // The draw, then the passes after it.
-    RenderStats stats = draw(input, settings, frame);
-    stats.clearMs = clearMs;
+    RenderStats stats = draw(input, settings, frame, &background);
+    stats.clearMs += clearMs;
     stats.vertexMs = vertexMs;
     stats.rasterMs = msSince(t);
     stats.vertexBytes = vertexBytes(settings, mesh, variantKey(settings, input));

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "binning/tile_buffer.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/settings.hpp"
 #include "frontend/fetch.hpp"
@@ -60,14 +61,15 @@ struct DrawConstants {
 struct RasterContext;
 
 /// A vector pixel loop of one variant and SIMD target (span_loop-inl.hpp): covers `setup` and
-/// shades with `planes` into ctx.fb; returns the pixels covered. Picked once per draw.
+/// shades with `planes` into `target` (the frame or a tile buffer); returns the pixels covered.
+/// Picked once per draw.
 using PixelLoopFn = std::size_t (*)(const RasterContext& ctx, const CoverageSetup& setup,
-                                    const Planes& planes);
+                                    const Planes& planes, const PixelTarget& target);
 
 /// What a variant's triangle rasterizer needs besides the triangle; shared, read-only, by the
 /// threads that rasterize disjoint tiles.
 struct RasterContext {
-    Framebuffer* fb;
+    Framebuffer* fb;  ///< the frame; the tile renderer passes each tile's PixelTarget
     const DrawConstants* constants;
     int subdivision;  ///< N of Interp::Subdivided
     /// The variant's span loop for the SIMD target picked for this draw; null: scalar only.
@@ -83,16 +85,16 @@ constexpr bool depthTested(ShaderKind s) {
 }
 
 /// The depth test alone, before any shading is paid for (early depth): same result as testing
-/// after shading, since shading has no side effects.
-template <ShaderKind S>
-inline bool passesDepth(const Framebuffer& fb, std::size_t i, float depth) {
+/// after shading, since shading has no side effects. `fb`: a Framebuffer or a PixelTarget.
+template <ShaderKind S, class Pixels>
+inline bool passesDepth(const Pixels& fb, std::size_t i, float depth) {
     if constexpr (depthTested(S)) return depth < fb.depth[i];
     return true;
 }
 
-/// Stores a fragment that passed passesDepth().
-template <ShaderKind S>
-inline void storeFragment(Framebuffer& fb, std::size_t i, float depth, const glm::vec3& color) {
+/// Stores a fragment that passed passesDepth() (into a Framebuffer or a PixelTarget).
+template <ShaderKind S, class Pixels>
+inline void storeFragment(Pixels& fb, std::size_t i, float depth, const glm::vec3& color) {
     if constexpr (depthTested(S)) fb.depth[i] = depth;
     if constexpr (S != ShaderKind::Depth) fb.color[i] = packColor(color);
 }

@@ -207,7 +207,8 @@ template <class V>
 struct MsaaRaster {
     MsaaContext ctx;
 
-    std::size_t operator()(const CoverageSetup& setup, const Planes& p) const {
+    std::size_t operator()(const CoverageSetup& setup, const Planes& p,
+                           const PixelTarget&) const {  // writes the per-sample buffer
         return rasterizeMsaaTriangle<V>(ctx, setup, p);
     }
 };

@@ -131,8 +131,8 @@ inline glm::vec3 shadeAt(const Planes& p, const DrawConstants& k, float dx, floa
 /// The scalar triangle pixel loop of variant V: every variant, one pixel at a time.
 template <class V>
 [[gnu::noinline]] std::size_t rasterizeScalar(const RasterContext& ctx, const CoverageSetup& setup,
-                                              const Planes& p) {
-    Framebuffer& fb = *ctx.fb;
+                                              const Planes& p, const PixelTarget& target) {
+    PixelTarget fb = target;
     const DrawConstants& k = *ctx.constants;
     SubdividedSpan span;
     const int n = ctx.subdivision;
@@ -162,27 +162,49 @@ template <class V>
 template <class V>
 [[gnu::always_inline]] inline std::size_t rasterizeTriangle(const RasterContext& ctx,
                                                             const CoverageSetup& setup,
-                                                            const Planes& p) {
+                                                            const Planes& p,
+                                                            const PixelTarget& target) {
     if constexpr (kHasSpanLoop<V>) {
         if (setup.box.x1 - setup.box.x0 >= kNarrowBox) {
-            if (ctx.spans) return ctx.spans(ctx, setup, p);
+            if (ctx.spans) return ctx.spans(ctx, setup, p, target);
         } else if (ctx.blocks &&
                    setup.box.x1 - setup.box.x0 + setup.box.y1 - setup.box.y0 + 2 >= kTinyBox &&
                    fitsBlockLoop(setup)) {
-            return ctx.blocks(ctx, setup, p);
+            return ctx.blocks(ctx, setup, p, target);
         }
     }
-    return rasterizeScalar<V>(ctx, setup, p);
+    return rasterizeScalar<V>(ctx, setup, p, target);
+}
+
+/// rasterizeTriangle() into the whole frame ctx.fb.
+template <class V>
+inline std::size_t rasterizeTriangle(const RasterContext& ctx, const CoverageSetup& setup,
+                                     const Planes& p) {
+    return rasterizeTriangle<V>(ctx, setup, p, PixelTarget::frame(*ctx.fb));
 }
 
 /// Variant V's rasterizer as the tile renderer takes it (TileRenderer::draw): the draw's state
-/// by value and a call per triangle that the tile loop inlines.
+/// by value and a call per triangle that the tile loop inlines. With a depth test, a triangle
+/// part wholly behind the tile's far bound (hierarchical depth, target.bound) is rejected before
+/// its pixels are visited, and one that covers the whole tile lowers the bound.
 template <class V>
 struct TriangleRaster {
     RasterContext ctx;
 
-    std::size_t operator()(const CoverageSetup& setup, const Planes& p) const {
-        return rasterizeTriangle<V>(ctx, setup, p);
+    std::size_t operator()(const CoverageSetup& setup, const Planes& p,
+                           const PixelTarget& target) const {
+        if constexpr (depthTested(V::kShader)) {
+            TileDepth* bound = target.bound;
+            if (bound && hiddenBehind(p, setup.box, bound->far)) {
+                ++bound->rejected;
+                return 0;
+            }
+            const std::size_t covered = rasterizeTriangle<V>(ctx, setup, p, target);
+            if (bound) lowerBound(setup, p, target.tile, *bound);
+            return covered;
+        } else {
+            return rasterizeTriangle<V>(ctx, setup, p, target);
+        }
     }
 };
 

@@ -174,11 +174,11 @@ HWY_INLINE void shadeLanes(const VecF* a, const DrawConstants& k, unsigned live,
 /// row spans.
 template <class V>
 HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const CoverageSetup& setup,
-                                        const Planes& p) {
+                                        const Planes& p, const PixelTarget& target) {
     static_assert(kHasSpanLoop<V>);
     const Df d;
     const Du du;
-    Framebuffer& fb = *ctx.fb;
+    const PixelTarget fb = target;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
     constexpr unsigned kAll = (1u << kLanes) - 1u;
@@ -192,7 +192,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const Coverage
         for (int i = 0; i < 3; ++i) row[i] += setup.stepY[i];
         if (!any) continue;
         const VecF dy = hn::Set(d, static_cast<float>(y - p.baseY));
-        const std::size_t rowStart = fb.index(0, y);
+        const std::size_t rowStart = fb.index(fb.x0, y);
 
         for (int x = lo; x <= hi; x += kLanes) {
             const int n = std::min(kLanes, hi - x + 1);
@@ -201,7 +201,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const Coverage
             // Exact below 2^24.
             const VecF dx = hn::Set(d, static_cast<float>(x - p.baseX)) + laneOffset;
             const VecF depth = hn::Set(d, 1.0f) / evalLanes(p.q, dx, dy);
-            float* zrow = fb.depth.data() + rowStart + static_cast<std::size_t>(x);
+            float* zrow = fb.depth + rowStart + static_cast<std::size_t>(x - fb.x0);
             if constexpr (depthTested(V::kShader)) {
                 VecF z;
                 if (n == kLanes) {
@@ -218,7 +218,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const Coverage
             weightLanes<V>(p, dx, dy, depth, m1, m2);
             VecF a[kCount > 0 ? kCount : 1];
             varyingLanes<V>(p, m1, m2, a);
-            std::uint32_t* crow = fb.color.data() + rowStart + static_cast<std::size_t>(x);
+            std::uint32_t* crow = fb.color + rowStart + static_cast<std::size_t>(x - fb.x0);
             if constexpr (kVectorColor<V> || kVectorTexture<V>) {
                 if (pass == kAll) {  // the inside of a wide triangle: two plain stores
                     if constexpr (depthTested(V::kShader)) hn::StoreU(depth, d, zrow);
@@ -338,11 +338,11 @@ HWY_INLINE void storeBlockRows([[maybe_unused]] VecF depth, [[maybe_unused]] Vec
 /// reuses the row's q₂·dy.
 template <class V>
 HWY_NOINLINE std::size_t rasterizeBlocks(const RasterContext& ctx, const CoverageSetup& setup,
-                                         const Planes& p) {
+                                         const Planes& p, const PixelTarget& target) {
     static_assert(kHasSpanLoop<V>);
     const Df d;
     const Di di;
-    Framebuffer& fb = *ctx.fb;
+    const PixelTarget fb = target;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
     constexpr unsigned kAll = (1u << kLanes) - 1u;
@@ -356,7 +356,7 @@ HWY_NOINLINE std::size_t rasterizeBlocks(const RasterContext& ctx, const Coverag
     const VecI ox = hn::And(lane, hn::Set(di, kBlockW - 1));
     const VecI oy = hn::ShiftRight<kBlockShift>(lane);
     const VecF offsetY = hn::ConvertTo(d, oy);
-    const VecI laneOffset = oy * hn::Set(di, fb.width) + ox;
+    const VecI laneOffset = oy * hn::Set(di, fb.stride) + ox;
     const auto i32 = [](std::int64_t v) { return static_cast<std::int32_t>(v); };
     const auto edgeStart = [&](int i) HWY_ATTR {
         return hn::Set(di, i32(setup.e0[i])) + ox * hn::Set(di, i32(setup.stepX[i])) +
@@ -402,8 +402,8 @@ HWY_NOINLINE std::size_t rasterizeBlocks(const RasterContext& ctx, const Coverag
         row2 = row2 + blockY2;
         const VecI boxRowHere = boxRow;
         boxRow = boxRow - boxStepY;
-        float* zrow = fb.depth.data() + fb.index(setup.box.x0, y);
-        std::uint32_t* crow = fb.color.data() + fb.index(setup.box.x0, y);
+        float* zrow = fb.depth + fb.index(setup.box.x0, y);
+        std::uint32_t* crow = fb.color + fb.index(setup.box.x0, y);
 
         for (int bx = 0; bx < width; bx += kBlockW, dx = dx + dxStep) {
             // Negative on some edge (the sign bit of the OR): outside the triangle or the box.
@@ -424,7 +424,7 @@ HWY_NOINLINE std::size_t rasterizeBlocks(const RasterContext& ctx, const Coverag
             unsigned pass = covered;
             if constexpr (depthTested(V::kShader)) {
                 pass &=
-                    laneBits(depth < blockDepths(zblock, fb.width, laneOffset, outside, covered));
+                    laneBits(depth < blockDepths(zblock, fb.stride, laneOffset, outside, covered));
                 if (pass == 0) continue;
             }
             VecF m1, m2;
@@ -435,7 +435,7 @@ HWY_NOINLINE std::size_t rasterizeBlocks(const RasterContext& ctx, const Coverag
             if constexpr (kMaskedRows && kVectorColor<V> && kMinVectorLanes<V> == 1) {
                 // Every block is shaded all lanes at once: the colours stay in a vector.
                 storeBlockRows<V>(depth, kCount == 0 ? flat : colorLanes<V>(a, k), pass, zblock,
-                                  cblock, fb.width);
+                                  cblock, fb.stride);
                 continue;
             }
             HWY_ALIGN std::uint32_t colors[kLanes];
