@@ -1,0 +1,183 @@
+// The tile-resident frame: a one-batch solid draw clears and draws each 64×64 tile in a
+// per-thread tile buffer and writes it to the frame once, and hierarchical depth rejects triangle
+// parts wholly behind a tile's far bound. Neither may change a pixel: each image is compared,
+// colour and depth, with the same frame drawn with both switched off (a clear pass, then every
+// triangle drawn in the frame), on frames whose sides are not multiples of 64 (partial tiles),
+// at 1 and 2 threads.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "binning/tiles.hpp"
+#include "facet/procedural.hpp"
+#include "facet/render.hpp"
+#include "test_scenes.hpp"
+
+namespace facet::test {
+namespace {
+
+/// Full-frame quads at depths 2, 3, … seen by a 90° camera at the origin looking down +z:
+/// drawn front to back when `frontToBack`, else back to front (the bench's overdraw case).
+Scene layers(int count, bool frontToBack, int width, int height) {
+    Mesh m;
+    const double focal = 0.5 * width;
+    for (int i = 0; i < count; ++i) {
+        const int layer = frontToBack ? i : count - 1 - i;
+        const float z = 2.0f + static_cast<float>(layer);
+        const float hx = 1.05f * static_cast<float>(0.5 * width / focal) * z;
+        const float hy = 1.05f * static_cast<float>(0.5 * height / focal) * z;
+        const auto base = static_cast<std::uint32_t>(m.positions.size());
+        const float corners[4][2] = {{-1, -1}, {-1, 1}, {1, 1}, {1, -1}};
+        for (const auto& c : corners) m.positions.emplace_back(c[0] * hx, c[1] * hy, z);
+        m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    return sceneOf(std::move(m), lookAt({0, 0, 0}, {0, 0, 1}, focal, width, height));
+}
+
+struct Drawn {
+    Framebuffer frame;
+    RenderStats stats;
+};
+
+/// `scene` rendered with the tile buffer and hierarchical depth on or off.
+Drawn render(const Scene& scene, const RenderSettings& settings, bool tileBuffer, bool hiZ) {
+    detail::enableTileBuffer(tileBuffer);
+    detail::enableHiZ(hiZ);
+    Renderer renderer;
+    Drawn d;
+    d.stats = renderer.render(scene, settings, d.frame).value();
+    detail::enableTileBuffer(true);
+    detail::enableHiZ(true);
+    return d;
+}
+
+/// Pixels whose colour or depth differ.
+std::size_t differences(const Framebuffer& a, const Framebuffer& b) {
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.color.size() && i < b.color.size(); ++i)
+        n += a.color[i] != b.color[i] || a.depth[i] != b.depth[i] ? 1 : 0;
+    return n;
+}
+
+std::vector<RenderSettings> configs() {
+    std::vector<RenderSettings> all;
+    RenderSettings s;
+    s.background = 0x336699;
+    s.shader = ShaderKind::Painter;
+    s.lighting = Lighting::Gouraud;
+    all.push_back(s);
+    s.lighting = Lighting::Phong;
+    all.push_back(s);
+    s.shader = ShaderKind::Depth;
+    all.push_back(s);
+    s.shader = ShaderKind::Simple;
+    s.lighting = Lighting::Off;
+    all.push_back(s);
+    return all;
+}
+
+// Meshes small enough for one batch (tile-resident) and one too large for it, framed so that
+// some tiles hold no triangle (they get the clear value straight away).
+TEST(TileBuffer, GivesTheImageDrawnInTheFrame) {
+    const Mesh meshes[] = {colouredByPosition(makeTorusKnot(2, 3, 64, 12)),
+                           colouredByPosition(makeUvSphere(12, 20)),
+                           colouredByPosition(makeTorusKnot(2, 3, 256, 24))};
+    const int sizes[][2] = {{333, 197}, {128, 64}, {70, 300}};
+    int compared = 0;
+    for (const Mesh& mesh : meshes)
+        for (const auto& size : sizes) {
+            const Scene scene =
+                sceneOf(mesh, lookAt({0.4, 0.3, -4.5}, {0.3, 0.2, 0}, size[0], size[0], size[1]));
+            for (RenderSettings settings : configs())
+                for (int threads : {1, 2}) {
+                    settings.threads = threads;
+                    const Drawn on = render(scene, settings, true, true);
+                    const Drawn off = render(scene, settings, false, false);
+                    ASSERT_GT(off.stats.fragments, 0u);
+                    EXPECT_EQ(differences(on.frame, off.frame), 0u)
+                        << mesh.indices.size() / 3 << " triangles at " << size[0] << "x"
+                        << size[1] << ", shader " << static_cast<int>(settings.shader)
+                        << ", threads " << threads;
+                    ++compared;
+                }
+        }
+    EXPECT_EQ(compared, 3 * 3 * 4 * 2);
+}
+
+// Full-frame layers: back to front every layer is drawn; front to back hierarchical depth
+// rejects every layer's parts behind the first, and the image is the one drawn without it.
+TEST(TileBuffer, HierarchicalDepthRejectsLayersBehind) {
+    for (bool frontToBack : {false, true})
+        for (int threads : {1, 2}) {
+            const Scene scene = layers(8, frontToBack, 333, 197);
+            RenderSettings settings;
+            settings.shader = ShaderKind::Painter;
+            settings.threads = threads;
+            const Drawn on = render(scene, settings, true, true);
+            const Drawn noHiZ = render(scene, settings, true, false);
+            const Drawn off = render(scene, settings, false, false);
+            EXPECT_EQ(differences(on.frame, off.frame), 0u);
+            EXPECT_EQ(differences(noHiZ.frame, off.frame), 0u);
+            EXPECT_EQ(noHiZ.stats.hiZTriangles, 0u);
+            if (frontToBack) {
+                // 6 × 4 tiles, each layer's two triangles touching every tile but for the
+                // diagonal's corners: most of the 7 layers behind are rejected.
+                EXPECT_GT(on.stats.hiZTriangles, 7u * 24u);
+                EXPECT_LT(on.stats.fragments, off.stats.fragments);
+            } else {
+                EXPECT_EQ(on.stats.hiZTriangles, 0u);  // every layer is in front
+                EXPECT_EQ(on.stats.fragments, off.stats.fragments);
+            }
+        }
+}
+
+// What the bound must not reject: a flat layer, then triangles just in front of it (0.1 % nearer)
+// and just behind; a tilted layer, then a triangle in front of its far part but behind its near
+// part (rejected if the bound were the tile's nearest depth instead of its farthest).
+TEST(TileBuffer, BoundKeepsWhatIsInFront) {
+    const int w = 256, h = 128;
+    const double focal = 0.5 * w;
+    for (const float tilt : {0.0f, 0.15f}) {
+        Mesh m;
+        // The layer: one triangle over the frame (so it covers every tile whole; the two of a
+        // quad leave the tiles on their diagonal unbounded), on the plane z = 4 + tilt·x.
+        const float hx = 6.0f, hy = 3.0f;
+        m.positions = {{-hx, -hy, 4.0f - tilt * hx},
+                       {-hx, 3.0f * hy, 4.0f - tilt * hx},
+                       {3.0f * hx, -hy, 4.0f + 3.0f * tilt * hx}};
+        m.indices = {0, 1, 2};
+        // Small triangles at x = ±0.5 (in front of the tilted layer's near and far halves),
+        // 0.1 % in front of the layer there or 0.1 % behind, each inside one tile.
+        for (const float x : {-0.5f, 0.5f})
+            for (const float f : {0.999f, 1.001f}) {
+                const float z = (4.0f + tilt * x) * f;
+                const auto b = static_cast<std::uint32_t>(m.positions.size());
+                m.positions.insert(m.positions.end(), {{x - 0.1f, 0.2f, z},
+                                                       {x - 0.1f, 0.4f, z},
+                                                       {x + 0.1f, 0.3f, z}});
+                m.indices.insert(m.indices.end(), {b, b + 1, b + 2});
+            }
+        const Scene scene = sceneOf(std::move(m), lookAt({0, 0, 0}, {0, 0, 1}, focal, w, h));
+        for (ShaderKind shader : {ShaderKind::Painter, ShaderKind::Depth}) {
+            RenderSettings settings;
+            settings.shader = shader;
+            settings.threads = 1;
+            const Drawn on = render(scene, settings, true, true);
+            const Drawn off = render(scene, settings, false, false);
+            EXPECT_EQ(differences(on.frame, off.frame), 0u) << "tilt " << tilt;
+            // Flat: the two behind are rejected; tilted, the far bounds of their tiles are
+            // behind them; the two in front never are.
+            EXPECT_LE(on.stats.hiZTriangles, 2u) << "tilt " << tilt;
+            if (tilt == 0.0f) EXPECT_EQ(on.stats.hiZTriangles, 2u);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace facet::test
