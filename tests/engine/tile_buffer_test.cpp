@@ -101,9 +101,9 @@ TEST(TileBuffer, GivesTheImageDrawnInTheFrame) {
                     const Drawn off = render(scene, settings, false, false);
                     ASSERT_GT(off.stats.fragments, 0u);
                     EXPECT_EQ(differences(on.frame, off.frame), 0u)
-                        << mesh.indices.size() / 3 << " triangles at " << size[0] << "x"
-                        << size[1] << ", shader " << static_cast<int>(settings.shader)
-                        << ", threads " << threads;
+                        << mesh.indices.size() / 3 << " triangles at " << size[0] << "x" << size[1]
+                        << ", shader " << static_cast<int>(settings.shader) << ", threads "
+                        << threads;
                     ++compared;
                 }
         }
@@ -158,9 +158,8 @@ TEST(TileBuffer, BoundKeepsWhatIsInFront) {
             for (const float f : {0.999f, 1.001f}) {
                 const float z = (4.0f + tilt * x) * f;
                 const auto b = static_cast<std::uint32_t>(m.positions.size());
-                m.positions.insert(m.positions.end(), {{x - 0.1f, 0.2f, z},
-                                                       {x - 0.1f, 0.4f, z},
-                                                       {x + 0.1f, 0.3f, z}});
+                m.positions.insert(m.positions.end(),
+                                   {{x - 0.1f, 0.2f, z}, {x - 0.1f, 0.4f, z}, {x + 0.1f, 0.3f, z}});
                 m.indices.insert(m.indices.end(), {b, b + 1, b + 2});
             }
         const Scene scene = sceneOf(std::move(m), lookAt({0, 0, 0}, {0, 0, 1}, focal, w, h));

@@ -289,7 +289,15 @@ std::size_t TileRenderer::drawTile(int tile, std::size_t first, std::size_t coun
     const int x0 = tile % tilesX_ * kTileSize, y0 = tile / tilesX_ * kTileSize;
     const PixelRect rect{x0, y0, std::min(x0 + kTileSize, width_) - 1,
                          std::min(y0 + kTileSize, height_) - 1};
-    TileDepth* bound = hiZ ? &depths_[static_cast<std::size_t>(tile)] : nullptr;
+    const auto at = static_cast<std::size_t>(tile);
+    bool any = false;
+    for (std::size_t s = first; s < first + count; ++s)
+        any = any || slices_[s].start[at] != slices_[s].start[at + 1];
+    if (!any) {  // no triangle here in this batch: when resident, the clear value straight away
+        if (resident) clearTile(rect, frame.background, *frame.fb);
+        return 0;
+    }
+    TileDepth* bound = hiZ ? &depths_[at] : nullptr;
     if (!resident) {
         PixelTarget target;  // unused by a raster that writes elsewhere (frame.fb null)
         if (frame.fb != nullptr) {
@@ -300,18 +308,13 @@ std::size_t TileRenderer::drawTile(int tile, std::size_t first, std::size_t coun
         return drawer.draw(*this, drawer.raster, {tile, first, count, &target});
     }
     Framebuffer& fb = *frame.fb;
-    const auto at = static_cast<std::size_t>(tile);
-    bool any = false;
-    for (std::size_t s = first; s < first + count; ++s)
-        any = any || slices_[s].start[at] != slices_[s].start[at + 1];
-    if (!any) {  // no triangle here: the clear value, straight into the frame
-        clearTile(rect, frame.background, fb);
-        return 0;
-    }
     TileBuffer& buffer = buffers_[static_cast<std::size_t>(omp_get_thread_num())];
     std::fill(std::begin(buffer.color), std::end(buffer.color), frame.background);
     std::fill(std::begin(buffer.depth), std::end(buffer.depth), kEmptyDepth);
-    const PixelTarget target{buffer.color, buffer.depth, kTileSize, x0, y0, rect, bound};
+    const PixelTarget target{
+        buffer.color, buffer.depth,
+        kTileSize,    static_cast<std::size_t>(y0) * kTileSize + static_cast<std::size_t>(x0),
+        rect,         bound};
     const std::size_t fragments = drawer.draw(*this, drawer.raster, {tile, first, count, &target});
     writeTile(buffer, rect, fb);
     return fragments;

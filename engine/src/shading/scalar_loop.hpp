@@ -132,7 +132,7 @@ inline glm::vec3 shadeAt(const Planes& p, const DrawConstants& k, float dx, floa
 template <class V>
 [[gnu::noinline]] std::size_t rasterizeScalar(const RasterContext& ctx, const CoverageSetup& setup,
                                               const Planes& p, const PixelTarget& target) {
-    PixelTarget fb = target;
+    PixelTarget fb = target;  // a copy: stores to pixels cannot change it
     const DrawConstants& k = *ctx.constants;
     SubdividedSpan span;
     const int n = ctx.subdivision;
@@ -200,7 +200,10 @@ struct TriangleRaster {
                 return 0;
             }
             const std::size_t covered = rasterizeTriangle<V>(ctx, setup, p, target);
-            if (bound) lowerBound(setup, p, target.tile, *bound);
+            // Only wide boxes may cover a tile (a partial tile narrower than kNarrowBox keeps no
+            // bound): the dense mesh's small triangles pay one compare here.
+            if (setup.box.x1 - setup.box.x0 >= kNarrowBox && bound)
+                lowerBound(setup, p, target.tile, *bound);
             return covered;
         } else {
             return rasterizeTriangle<V>(ctx, setup, p, target);

@@ -178,7 +178,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const Coverage
     static_assert(kHasSpanLoop<V>);
     const Df d;
     const Du du;
-    const PixelTarget fb = target;
+    const PixelTarget& fb = target;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
     constexpr unsigned kAll = (1u << kLanes) - 1u;
@@ -192,7 +192,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const Coverage
         for (int i = 0; i < 3; ++i) row[i] += setup.stepY[i];
         if (!any) continue;
         const VecF dy = hn::Set(d, static_cast<float>(y - p.baseY));
-        const std::size_t rowStart = fb.index(fb.x0, y);
+        const std::size_t rowStart = fb.index(0, y);  // modulo 2^64: + x below
 
         for (int x = lo; x <= hi; x += kLanes) {
             const int n = std::min(kLanes, hi - x + 1);
@@ -201,7 +201,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const Coverage
             // Exact below 2^24.
             const VecF dx = hn::Set(d, static_cast<float>(x - p.baseX)) + laneOffset;
             const VecF depth = hn::Set(d, 1.0f) / evalLanes(p.q, dx, dy);
-            float* zrow = fb.depth + rowStart + static_cast<std::size_t>(x - fb.x0);
+            float* zrow = fb.depth + (rowStart + static_cast<std::size_t>(x));
             if constexpr (depthTested(V::kShader)) {
                 VecF z;
                 if (n == kLanes) {
@@ -218,7 +218,7 @@ HWY_NOINLINE std::size_t rasterizeSpans(const RasterContext& ctx, const Coverage
             weightLanes<V>(p, dx, dy, depth, m1, m2);
             VecF a[kCount > 0 ? kCount : 1];
             varyingLanes<V>(p, m1, m2, a);
-            std::uint32_t* crow = fb.color + rowStart + static_cast<std::size_t>(x - fb.x0);
+            std::uint32_t* crow = fb.color + (rowStart + static_cast<std::size_t>(x));
             if constexpr (kVectorColor<V> || kVectorTexture<V>) {
                 if (pass == kAll) {  // the inside of a wide triangle: two plain stores
                     if constexpr (depthTested(V::kShader)) hn::StoreU(depth, d, zrow);
@@ -342,7 +342,7 @@ HWY_NOINLINE std::size_t rasterizeBlocks(const RasterContext& ctx, const Coverag
     static_assert(kHasSpanLoop<V>);
     const Df d;
     const Di di;
-    const PixelTarget fb = target;
+    const PixelTarget& fb = target;
     const DrawConstants& k = *ctx.constants;
     constexpr int kCount = V::kCount;
     constexpr unsigned kAll = (1u << kLanes) - 1u;
