@@ -199,11 +199,12 @@ struct TriangleRaster {
                 ++bound->rejected;
                 return 0;
             }
-            const std::size_t covered = rasterizeTriangle<V>(ctx, setup, p, target);
             // Only wide boxes may cover a tile (a partial tile narrower than kNarrowBox keeps no
-            // bound): the dense mesh's small triangles pay one compare here.
-            if (setup.box.x1 - setup.box.x0 >= kNarrowBox && bound)
-                lowerBound(setup, p, target.tile, *bound);
+            // bound): the dense mesh's small triangles end in a tail call, as without the bound.
+            if (setup.box.x1 - setup.box.x0 < kNarrowBox || !bound)
+                return rasterizeTriangle<V>(ctx, setup, p, target);
+            const std::size_t covered = rasterizeTriangle<V>(ctx, setup, p, target);
+            lowerBound(setup, p, target.tile, *bound);
             return covered;
         } else {
             return rasterizeTriangle<V>(ctx, setup, p, target);
