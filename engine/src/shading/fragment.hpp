@@ -97,9 +97,10 @@ inline void storeFragment(Framebuffer& fb, std::size_t i, float depth, const glm
     if constexpr (S != ShaderKind::Depth) fb.color[i] = packColor(color);
 }
 
-/// A texel through the variant's filter; `lod` matters for trilinear only.
+/// A texel through the variant's filter; `lod` matters for trilinear only. Always inlined, like
+/// the samplers (samplers.hpp says why): the vector loops call it on their few-lane blocks.
 template <TextureFilter F>
-inline glm::vec3 sampleTexture(const Texture& tex, glm::vec2 uv, float lod) {
+[[gnu::always_inline]] inline glm::vec3 sampleTexture(const Texture& tex, glm::vec2 uv, float lod) {
     if constexpr (F == TextureFilter::Nearest) return sampleNearest(tex, uv);
     if constexpr (F == TextureFilter::Bilinear) return sampleBilinear(tex, uv);
     if constexpr (F == TextureFilter::Trilinear) return sampleTrilinear(tex, uv, lod);
