@@ -114,9 +114,11 @@ struct UnitPow {
 
 /// The colour of a fragment from its interpolated varyings (spec §6, §7): vertex or
 /// Gouraud colour as interpolated; Phong lights the interpolated normal here (phongTerms()); the
-/// texture shader returns the texel, times that colour with "combine".
+/// texture shader returns the texel, times that colour with "combine". Always inlined, so that
+/// the vector loops' few-lane fallback runs it compiled for their target (samplers.hpp).
 template <class V>
-inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k, float lod) {
+[[gnu::always_inline]] inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k,
+                                                      float lod) {
     constexpr VaryingLayout L = V::kLayout;
     glm::vec3 rgb = k.baseColor;
     if constexpr (L.color) rgb = vec3At(a, L.colorAt());
