@@ -99,9 +99,10 @@ inline void storeFragment(Pixels& fb, std::size_t i, float depth, const glm::vec
     if constexpr (S != ShaderKind::Depth) fb.color[i] = packColor(color);
 }
 
-/// A texel through the variant's filter; `lod` matters for trilinear only.
+/// A texel through the variant's filter; `lod` matters for trilinear only. Always inlined, like
+/// the samplers (samplers.hpp says why): the vector loops call it on their few-lane blocks.
 template <TextureFilter F>
-inline glm::vec3 sampleTexture(const Texture& tex, glm::vec2 uv, float lod) {
+[[gnu::always_inline]] inline glm::vec3 sampleTexture(const Texture& tex, glm::vec2 uv, float lod) {
     if constexpr (F == TextureFilter::Nearest) return sampleNearest(tex, uv);
     if constexpr (F == TextureFilter::Bilinear) return sampleBilinear(tex, uv);
     if constexpr (F == TextureFilter::Trilinear) return sampleTrilinear(tex, uv, lod);
@@ -115,9 +116,11 @@ struct UnitPow {
 
 /// The colour of a fragment from its interpolated varyings (spec §6, §7): vertex or
 /// Gouraud colour as interpolated; Phong lights the interpolated normal here (phongTerms()); the
-/// texture shader returns the texel, times that colour with "combine".
+/// texture shader returns the texel, times that colour with "combine". Always inlined, so that
+/// the vector loops' few-lane fallback runs it compiled for their target (samplers.hpp).
 template <class V>
-inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k, float lod) {
+[[gnu::always_inline]] inline glm::vec3 fragmentColor(const float* a, const DrawConstants& k,
+                                                      float lod) {
     constexpr VaryingLayout L = V::kLayout;
     glm::vec3 rgb = k.baseColor;
     if constexpr (L.color) rgb = vec3At(a, L.colorAt());

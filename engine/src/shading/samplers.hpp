@@ -4,6 +4,13 @@
 // of exactly 0 or 1 then reproduces a texel bit for bit, so bilinear filtering at a texel centre
 // returns that texel exactly (texelColor()).
 //
+// Every sampler is always inlined: the vector loops (span_loop-inl.hpp, compiled per SIMD target)
+// shade their few-lane blocks through these scalar samplers, and an out-of-line copy is compiled
+// for the baseline target, legacy SSE. A call into SSE code with the AVX-512 registers' upper
+// halves in use paid about a microsecond-scale state transition per pixel on the bench machine
+// (docs/performance.md); inlined, the sampler is compiled with the caller's target. The results
+// are the same bits: the engine builds with -ffp-contract=off, so no target fuses an operation.
+//
 // Non-finite coordinates (NaN, ±inf) wrap to 0, as does every float of magnitude ≥ 2^23 (all of
 // which are integers). The level of detail maps NaN to 0 and +inf to the last level.
 
@@ -22,7 +29,7 @@ namespace facet {
 
 /// Repeat wrap, t − ⌊t⌋, in [0, 1]: exactly 1 only when a tiny negative t rounds up to it.
 /// NaN, ±inf and |t| ≥ 2^23 (integers in float) give 0.
-inline float wrapCoord(float t) {
+[[gnu::always_inline]] inline float wrapCoord(float t) {
     // The cast is only taken where it is defined; beyond 2^23 every float is an integer anyway.
     if (!(std::fabs(t) < 8388608.0f)) return 0.0f;
     const float w = t - static_cast<float>(static_cast<int>(t));  // exact: the fraction
@@ -30,7 +37,7 @@ inline float wrapCoord(float t) {
 }
 
 /// The texel at (x, y) as an RGB colour in [0, 1]; what filtering returns at a texel centre.
-inline glm::vec3 texelColor(const MipLevel& level, int x, int y) {
+[[gnu::always_inline]] inline glm::vec3 texelColor(const MipLevel& level, int x, int y) {
     const std::uint32_t p = level.at(x, y);
     return glm::vec3(static_cast<float>(p & 0xFFu), static_cast<float>((p >> 8) & 0xFFu),
                      static_cast<float>((p >> 16) & 0xFFu)) *
@@ -40,7 +47,7 @@ inline glm::vec3 texelColor(const MipLevel& level, int x, int y) {
 namespace detail {
 
 /// A texel's RGB as 0..255 floats.
-inline glm::vec3 texel255(const std::uint32_t* row, int x) {
+[[gnu::always_inline]] inline glm::vec3 texel255(const std::uint32_t* row, int x) {
     const std::uint32_t p = row[x];
     return {static_cast<float>(p & 0xFFu), static_cast<float>((p >> 8) & 0xFFu),
             static_cast<float>((p >> 16) & 0xFFu)};
@@ -54,7 +61,7 @@ struct BilinearTaps {
 };
 
 /// The taps of one level at already wrapped coordinates.
-inline BilinearTaps bilinearTaps(const MipLevel& level, float wu, float wv) {
+[[gnu::always_inline]] inline BilinearTaps bilinearTaps(const MipLevel& level, float wu, float wv) {
     const int w = level.width;
     const int h = level.height;
     // Texel centres sit at half-integers; x, y are in [−½, size − ½] since wu, wv are in [0, 1].
@@ -73,7 +80,7 @@ inline BilinearTaps bilinearTaps(const MipLevel& level, float wu, float wv) {
 }
 
 /// Bilinear filtering of one level at already wrapped coordinates, in 0..255.
-inline glm::vec3 bilinear255(const MipLevel& level, float wu, float wv) {
+[[gnu::always_inline]] inline glm::vec3 bilinear255(const MipLevel& level, float wu, float wv) {
     const BilinearTaps t = bilinearTaps(level, wu, wv);
     const auto w = static_cast<std::size_t>(level.width);
     const std::uint32_t* r0 = level.texels.data() + static_cast<std::size_t>(t.y0) * w;
@@ -96,7 +103,7 @@ struct TrilinearLevels {
 };
 
 /// The levels trilinear filtering reads at level of detail `lod`.
-inline TrilinearLevels trilinearLevels(const Texture& tex, float lod) {
+[[gnu::always_inline]] inline TrilinearLevels trilinearLevels(const Texture& tex, float lod) {
     const float last = static_cast<float>(tex.levelCount() - 1);
     const float l = lod > 0.0f ? std::min(lod, last) : 0.0f;  // NaN → 0
     const int l0 = static_cast<int>(l);
@@ -106,7 +113,7 @@ inline TrilinearLevels trilinearLevels(const Texture& tex, float lod) {
 }  // namespace detail
 
 /// Nearest filtering's texel on level 0: (⌊u'·W⌋, ⌊v'·H⌋) clamped to the image.
-inline glm::ivec2 nearestTexel(const Texture& tex, glm::vec2 uv) {
+[[gnu::always_inline]] inline glm::ivec2 nearestTexel(const Texture& tex, glm::vec2 uv) {
     const MipLevel& l0 = tex.level(0);
     // wrapCoord is in [0, 1], so the products are in [0, size]: the casts are defined and
     // truncation is floor; only 1.0 needs the clamp.
@@ -116,21 +123,22 @@ inline glm::ivec2 nearestTexel(const Texture& tex, glm::vec2 uv) {
 }
 
 /// Nearest filtering: the colour of nearestTexel().
-inline glm::vec3 sampleNearest(const Texture& tex, glm::vec2 uv) {
+[[gnu::always_inline]] inline glm::vec3 sampleNearest(const Texture& tex, glm::vec2 uv) {
     const glm::ivec2 t = nearestTexel(tex, uv);
     return texelColor(tex.level(0), t.x, t.y);
 }
 
 /// Bilinear filtering on one level (clamped to the chain), texel centres at ((i+½)/W, (j+½)/H),
 /// neighbours wrapping around the edges.
-inline glm::vec3 sampleBilinear(const Texture& tex, glm::vec2 uv, int level = 0) {
+[[gnu::always_inline]] inline glm::vec3 sampleBilinear(const Texture& tex, glm::vec2 uv,
+                                                       int level = 0) {
     const int l = std::clamp(level, 0, tex.levelCount() - 1);
     return detail::bilinear255(tex.level(l), wrapCoord(uv.x), wrapCoord(uv.y)) * (1.0f / 255.0f);
 }
 
 /// Level of detail λ = log2 ρ, ρ = max(|(∂u/∂x·W, ∂v/∂x·H)|, |(∂u/∂y·W, ∂v/∂y·H)|) with W, H
 /// the size of level 0, clamped to [0, levelCount − 1]; a NaN derivative gives 0.
-inline float mipLevel(const Texture& tex, glm::vec2 duvDx, glm::vec2 duvDy) {
+[[gnu::always_inline]] inline float mipLevel(const Texture& tex, glm::vec2 duvDx, glm::vec2 duvDy) {
     const float w = static_cast<float>(tex.width());
     const float h = static_cast<float>(tex.height());
     const float ax = duvDx.x * w, ay = duvDx.y * h;
@@ -146,7 +154,8 @@ inline float mipLevel(const Texture& tex, glm::vec2 duvDx, glm::vec2 duvDy) {
 
 /// Trilinear filtering: bilinear on levels ⌊λ⌋ and ⌊λ⌋+1 mixed by the fraction of λ (clamped as
 /// mipLevel() does). An integer λ samples that one level only, so λ ≤ 0 is sampleBilinear().
-inline glm::vec3 sampleTrilinear(const Texture& tex, glm::vec2 uv, float lod) {
+[[gnu::always_inline]] inline glm::vec3 sampleTrilinear(const Texture& tex, glm::vec2 uv,
+                                                        float lod) {
     const float wu = wrapCoord(uv.x);
     const float wv = wrapCoord(uv.y);
     const detail::TrilinearLevels levels = detail::trilinearLevels(tex, lod);
@@ -158,8 +167,8 @@ inline glm::vec3 sampleTrilinear(const Texture& tex, glm::vec2 uv, float lod) {
 }
 
 /// Trilinear filtering with λ from the screen-space derivatives of (u, v).
-inline glm::vec3 sampleTrilinear(const Texture& tex, glm::vec2 uv, glm::vec2 duvDx,
-                                 glm::vec2 duvDy) {
+[[gnu::always_inline]] inline glm::vec3 sampleTrilinear(const Texture& tex, glm::vec2 uv,
+                                                        glm::vec2 duvDx, glm::vec2 duvDy) {
     return sampleTrilinear(tex, uv, mipLevel(tex, duvDx, duvDy));
 }
 
