@@ -226,7 +226,8 @@ using Df = hn::Rebind<float, Dd>;
 using Dw = hn::Rebind<std::int32_t, Dd>;
 using VecD = hn::Vec<Dd>;
 
-/// Clip positions a survivor's gather may index: vertex i's floats start at 4i in 32 bits.
+/// Clip positions a survivor's gather may index: vertex i's floats start at 4i in 32 bits (and
+/// its varyings at 3i or 2i).
 constexpr std::size_t kPlaneVertices = std::size_t{1} << 29;
 
 /// The planes of the chunk's survivors (those of out.at without kScalar, in that order), a
@@ -255,9 +256,10 @@ HWY_INLINE void planesOf(const LaneInput& in, std::size_t chunk, LaneChunk& out)
     for (std::size_t g = 0; g < survivors; g += n) {
         const auto k3 = hn::Mul(hn::LoadU(dw, which + g), hn::Set(dw, 3));
         VecD sx[3], sy[3], r[3];
+        hn::Vec<Dw> vertex[3];
         for (int j = 0; j < 3; ++j) {
-            const auto v4 =
-                hn::ShiftLeft<2>(hn::GatherIndex(dw, indices, hn::Add(k3, hn::Set(dw, j))));
+            vertex[j] = hn::GatherIndex(dw, indices, hn::Add(k3, hn::Set(dw, j)));
+            const auto v4 = hn::ShiftLeft<2>(vertex[j]);
             const VecD x = hn::PromoteTo(dd, hn::GatherIndex(df, clip, v4));
             const VecD y = hn::PromoteTo(dd, hn::GatherIndex(df, clip + 1, v4));
             const VecD w = hn::PromoteTo(dd, hn::GatherIndex(df, clip + 3, v4));
@@ -309,6 +311,34 @@ HWY_INLINE void planesOf(const LaneInput& in, std::size_t chunk, LaneChunk& out)
         hn::StoreU(hn::DemoteTo(dw, hn::IfThenElse(usable, baseX, hn::Set(dd, -1.0))), dw,
                    out.base[0] + g);
         hn::StoreU(byi, dw, out.base[1] + g);
+
+        // setVaryingPlanes(): each varying of the three vertices gathered from its stream (the
+        // fill of a missing one), a0 = a0, d1 = a1 − a0, d2 = a2 − a0 in float, as the scalar
+        // loop rounds them.
+        std::size_t row = 0;
+        for (int k = 0; k < in.varyings.count; ++k) {
+            const VaryingStream& stream = in.varyings.s[k];
+            if (stream.data == nullptr) {
+                for (int c = 0; c < stream.size; ++c, ++row) {
+                    hn::StoreU(hn::Set(df, stream.fill), df, out.varying[row] + g);
+                    hn::StoreU(hn::Zero(df), df, out.varying[kMaxVaryings + row] + g);
+                    hn::StoreU(hn::Zero(df), df, out.varying[2 * kMaxVaryings + row] + g);
+                }
+                continue;
+            }
+            const auto size = hn::Set(dw, stream.size);
+            const hn::Vec<Dw> at[3] = {hn::Mul(vertex[0], size), hn::Mul(vertex[1], size),
+                                       hn::Mul(vertex[2], size)};
+            for (int c = 0; c < stream.size; ++c, ++row) {
+                const float* from = stream.data + c;
+                const auto a0 = hn::GatherIndex(df, from, at[0]);
+                const auto a1 = hn::GatherIndex(df, from, at[1]);
+                const auto a2 = hn::GatherIndex(df, from, at[2]);
+                hn::StoreU(a0, df, out.varying[row] + g);
+                hn::StoreU(hn::Sub(a1, a0), df, out.varying[kMaxVaryings + row] + g);
+                hn::StoreU(hn::Sub(a2, a0), df, out.varying[2 * kMaxVaryings + row] + g);
+            }
+        }
     }
 }
 
