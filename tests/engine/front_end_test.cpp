@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -527,19 +528,51 @@ Mesh planeCases() {
     return m;
 }
 
+/// Varying streams for planeCases(): every vertex its own values, of every sign and of
+/// exponents over six decades, so that the lanes' differences d1 and d2 round as the scalar
+/// path's do only if each lane subtracts its own triangle's values in float.
+struct PlaneStreams {
+    std::vector<glm::vec3> colors, normals, positions;
+    std::vector<glm::vec2> uvs;
+    explicit PlaneStreams(std::size_t vertices) {
+        std::mt19937 rng(112026);
+        std::uniform_real_distribution<double> mantissa(-1.0, 1.0), exponent(-3.0, 3.0);
+        auto f = [&] { return static_cast<float>(mantissa(rng) * std::pow(10.0, exponent(rng))); };
+        for (std::size_t i = 0; i < vertices; ++i) {
+            colors.emplace_back(f(), f(), f());
+            uvs.emplace_back(f(), f());
+            normals.emplace_back(f(), f(), f());
+            positions.emplace_back(f(), f(), f());
+        }
+    }
+};
+
+/// A layout of the lanes' plane test and which of its streams the mesh lacks.
+struct PlaneLayout {
+    const char* name;
+    VaryingLayout layout;
+    bool withUvs = true;  ///< false: the uv stream is missing (fetchVaryings()' fill)
+};
+
 // The lanes' planes (LaneChunk::planes), survivor by survivor, against the scalar stages
-// (screenPosition(), planeBase(), makePlanes()) bit for bit, on every SIMD target; their edges
-// against edgesOf() of their own snapped triangle.
+// (screenPosition(), planeBase(), makePlanes(), fetchVaryings()) bit for bit, on every SIMD
+// target and for the layouts the draws use (none, rgb, uv, normal and position, uv with them,
+// all, and uv without the mesh's uvs); their edges against edgesOf() of their own snapped
+// triangle. Not vacuous: a value changed in one lane of the chunk is reported.
 TEST(LanePlanes, EqualMakePlanesBitForBitOnEveryTarget) {
     const Mesh mesh = planeCases();
-    const DrawInput in = mesh.input();
+    const PlaneStreams streams(mesh.clip.size());
     const ScreenSpace space = ScreenSpace::of(kWidth, kHeight, kNear, kSubPixelBits);
     std::vector<ScreenVertex> screen;
     for (const glm::vec4& p : mesh.clip) screen.push_back(space.vertex(p));
     const std::size_t triangles = mesh.indices.size() / 3;
-    const LaneInput lanesIn{
-        in.indices.data(), in.clip.size(), screen.data(), kWidth, kHeight, 0, false,
-        in.clip.data()};
+    const PlaneLayout layouts[] = {{"none", {false, false, false}},
+                                   {"rgb", {true, false, false}},
+                                   {"uv", {false, true, false}},
+                                   {"normal", {false, false, true}},
+                                   {"normal uv", {false, true, true}},
+                                   {"rgb normal uv", {true, true, true}},
+                                   {"missing uv", {true, true, false}, false}};
 
     hwy::SetSupportedTargetsForTest(0);
     const std::int64_t targets = spanTargetsCompiled() & hwy::SupportedTargets();
@@ -550,60 +583,105 @@ TEST(LanePlanes, EqualMakePlanesBitForBitOnEveryTarget) {
         const LaneSetupFn lanes = laneSetup();
         hwy::SetSupportedTargetsForTest(0);
         ASSERT_NE(lanes, nullptr);
-        const char* name = hwy::TargetName(target);
-        std::size_t checked = 0, refused = 0, mismatched = 0;
-        LaneChunk chunk;
-        // Starting at 3: chunks that do not start on a whole vector of triangles.
-        for (std::size_t c = 3; c < triangles; c += LaneChunk::kSize) {
-            lanes(lanesIn, c, std::min(triangles, c + LaneChunk::kSize), chunk);
-            ASSERT_TRUE(chunk.planes) << name;
-            std::uint32_t j = 0;
-            for (std::uint32_t e = 0; e < chunk.count; ++e) {
-                if (chunk.at[e] & LaneChunk::kScalar) continue;
-                const std::uint32_t k = chunk.at[e];
+        for (const PlaneLayout& pl : layouts) {
+            DrawInput in = mesh.input();
+            in.colors = streams.colors;
+            in.normals = streams.normals;
+            in.positions = streams.positions;
+            if (pl.withUvs) in.uvs = streams.uvs;
+            const VaryingLayout layout = pl.layout;
+            const int count = layout.count();
+            const LaneInput lanesIn{in.indices.data(),
+                                    in.clip.size(),
+                                    screen.data(),
+                                    kWidth,
+                                    kHeight,
+                                    0,
+                                    false,
+                                    in.clip.data(),
+                                    varyingStreams(in, layout)};
+            const std::string name = std::string(hwy::TargetName(target)) + ", varyings " + pl.name;
+            std::size_t checked = 0, refused = 0, mismatched = 0, tried = 0, caught = 0;
+            auto chunk = std::make_unique<LaneChunk>();
+            // Survivor j (triangle c + k) of the chunk against the scalar stages.
+            auto same = [&](std::size_t c, std::uint32_t k, std::uint32_t j) {
                 const std::size_t t = 3 * (c + k);
                 glm::dvec2 s[3];
                 ClipVertex v[3];
                 for (int m = 0; m < 3; ++m) {
-                    v[m] = fetchVertex(in, VaryingLayout{}, in.indices[t + m]);
+                    v[m] = fetchVertex(in, layout, in.indices[t + m]);
                     s[m] = screenPosition(v[m].pos);
                 }
                 int baseX = 0, baseY = 0;
                 front::planeBase(s, space.W, space.H, baseX, baseY);
                 Planes p;
-                const bool usable = makePlanes(s, v, 0, baseX, baseY, p);
-                const std::int32_t laneBaseX = chunk.base[0][j];
-                bool same = usable == (laneBaseX >= 0);
-                if (usable && same) {
+                const bool usable = makePlanes(s, v, count, baseX, baseY, p);
+                const std::int32_t laneBaseX = chunk->base[0][j];
+                bool ok = usable == (laneBaseX >= 0);
+                auto bits = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+                if (usable && ok) {
                     const float* want[5] = {p.l1, p.l2, p.u1, p.u2, p.q};
-                    same = baseX == laneBaseX && baseY == chunk.base[1][j];
+                    ok = baseX == laneBaseX && baseY == chunk->base[1][j];
                     for (int i = 0; i < 5; ++i)
                         for (int m = 0; m < 3; ++m)
-                            same = same && std::memcmp(&want[i][m], &chunk.plane[3 * i + m][j],
-                                                       sizeof(float)) == 0;
+                            ok = ok && bits(want[i][m], chunk->plane[3 * i + m][j]);
+                }
+                if (usable) {
+                    for (int r = 0; r < count; ++r) {
+                        ok = ok && bits(p.a0[r], chunk->varying[r][j]) &&
+                             bits(p.d1[r], chunk->varying[kMaxVaryings + r][j]) &&
+                             bits(p.d2[r], chunk->varying[2 * kMaxVaryings + r][j]);
+                    }
                 }
                 SnappedTriangle tri;
                 for (int m = 0; m < 3; ++m) {
-                    tri.x[m] = chunk.x[m][k];
-                    tri.y[m] = chunk.y[m][k];
+                    tri.x[m] = chunk->x[m][k];
+                    tri.y[m] = chunk->y[m][k];
                 }
-                tri.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
-                tri.area2 = chunk.area2[k];
+                tri.box = {chunk->box[0][k], chunk->box[1][k], chunk->box[2][k], chunk->box[3][k]};
+                tri.area2 = chunk->area2[k];
                 CoverageSetup edges;
                 edgesOf(tri, edges);
-                for (int m = 0; m < 3; ++m) same = same && edges.e0[m] == chunk.e0[m][k];
-                if (!same && ++mismatched <= 5)
-                    ADD_FAILURE() << name << ": triangle " << c + k << " differs";
-                refused += usable ? 0 : 1;
-                ++checked;
-                ++j;
+                for (int m = 0; m < 3; ++m) ok = ok && edges.e0[m] == chunk->e0[m][k];
+                return ok;
+            };
+            // Starting at 3: chunks that do not start on a whole vector of triangles.
+            for (std::size_t c = 3; c < triangles; c += LaneChunk::kSize) {
+                lanes(lanesIn, c, std::min(triangles, c + LaneChunk::kSize), *chunk);
+                ASSERT_TRUE(chunk->planes) << name;
+                std::uint32_t j = 0;
+                for (std::uint32_t e = 0; e < chunk->count; ++e) {
+                    if (chunk->at[e] & LaneChunk::kScalar) continue;
+                    const std::uint32_t k = chunk->at[e];
+                    const bool usable = chunk->base[0][j] >= 0;
+                    if (!same(c, k, j) && ++mismatched <= 5)
+                        ADD_FAILURE() << name << ": triangle " << c + k << " differs";
+                    // The check itself: one varying float of this lane a little off (one
+                    // unit in the last place), each row in turn, must be reported.
+                    if (usable && count > 0 && j % 3 == 1) {
+                        const std::uint32_t row = (j / 3) % count + kMaxVaryings * ((j / 7) % 3);
+                        float& f = chunk->varying[row][j];
+                        const float kept = f;
+                        f = std::nextafter(f, std::numeric_limits<float>::infinity());
+                        ++tried;
+                        caught += same(c, k, j) ? 0 : 1;
+                        f = kept;
+                    }
+                    refused += usable ? 0 : 1;
+                    ++checked;
+                    ++j;
+                }
             }
+            EXPECT_EQ(mismatched, 0u) << name;
+            EXPECT_GT(checked, 3000u) << name;  // not vacuous: most triangles reach the planes
+            EXPECT_GE(refused, 20u) << name;    // and the collinear pairs reach makePlanes' refusal
+            if (count > 0) {
+                EXPECT_GT(tried, 500u) << name;
+                EXPECT_EQ(caught, tried) << name << ": a changed lane went unseen";
+            }
+            std::printf("lanes' planes checked on %s: %zu triangles, %zu refused\n", name.c_str(),
+                        checked, refused);
         }
-        EXPECT_EQ(mismatched, 0u) << name;
-        EXPECT_GT(checked, 3000u) << name;  // not vacuous: most triangles reach the planes
-        EXPECT_GE(refused, 20u) << name;    // and the collinear pairs reach makePlanes' refusal
-        std::printf("lanes' planes checked on %s: %zu triangles, %zu refused\n", name, checked,
-                    refused);
         ++tested;
     }
     EXPECT_GE(tested, 1u);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <string_view>
+#include <type_traits>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -46,19 +47,62 @@ struct ClipVertex {
     std::array<float, kMaxVaryings> a;
 };
 
-/// Writes vertex i's varyings that the layout asks for to a[0 … layout.count()). Missing
-/// streams give white, (0, 0) and zero normals, so a layout never reads past a span.
+/// One stream of packed varyings: `size` floats per vertex at `data`, or, for a stream the mesh
+/// lacks (data null), `fill` for each of them.
+struct VaryingStream {
+    const float* data = nullptr;  ///< vertex i's floats at data[size·i …], or null
+    int size = 0;                 ///< floats per vertex
+    float fill = 0.0f;            ///< every float of a missing stream
+};
+
+/// The streams a layout asks for, in packed order: what fetchVaryings() copies, and what the
+/// lanes stage (setup_lanes.cpp) gathers.
+struct VaryingStreams {
+    VaryingStream s[4];
+    int count = 0;  ///< streams in s
+};
+
+/// The streams of `layout` in `in`. Missing streams give white, (0, 0) and zero normals, so a
+/// layout never reads past a span.
+inline VaryingStreams varyingStreams(const DrawInput& in, const VaryingLayout& layout) {
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
+    VaryingStreams out;
+    auto add = [&](const auto& span, int size, float fill) {
+        out.s[out.count++] = {span.empty() ? nullptr : &span[0][0], size, fill};
+    };
+    if (layout.color) add(in.colors, 3, 1.0f);
+    if (layout.uv) add(in.uvs, 2, 0.0f);
+    if (layout.phong) {
+        add(in.normals, 3, 0.0f);
+        add(in.positions, 3, 0.0f);
+    }
+    return out;
+}
+
+/// Writes vertex i's varyings of `streams` to `a`, packed (their sizes summed: layout.count()).
+inline void fetchVaryings(const VaryingStreams& streams, std::size_t i, float* a) {
+    for (int k = 0; k < streams.count; ++k) {
+        const VaryingStream& s = streams.s[k];
+        // Sizes 2 and 3 spelt out: copies the compiler unrolls, no call to memmove per vertex.
+        auto put = [&](auto size) {
+            for (int c = 0; c < size; ++c)
+                a[c] =
+                    s.data != nullptr
+                        ? s.data[static_cast<std::size_t>(size()) * i + static_cast<std::size_t>(c)]
+                        : s.fill;
+            a += size;
+        };
+        if (s.size == 3)
+            put(std::integral_constant<int, 3>{});
+        else
+            put(std::integral_constant<int, 2>{});
+    }
+}
+
+/// Writes vertex i's varyings that the layout asks for to a[0 … layout.count()).
 inline void fetchVaryings(const DrawInput& in, const VaryingLayout& layout, std::size_t i,
                           float* a) {
-    auto put = [&](int at, const auto& value, int n) {
-        for (int k = 0; k < n; ++k) a[at + k] = value[k];
-    };
-    if (layout.color) put(layout.colorAt(), in.colors.empty() ? glm::vec3(1.0f) : in.colors[i], 3);
-    if (layout.uv) put(layout.uvAt(), in.uvs.empty() ? glm::vec2(0.0f) : in.uvs[i], 2);
-    if (layout.phong) {
-        put(layout.normalAt(), in.normals.empty() ? glm::vec3(0.0f) : in.normals[i], 3);
-        put(layout.positionAt(), in.positions.empty() ? glm::vec3(0.0f) : in.positions[i], 3);
-    }
+    fetchVaryings(varyingStreams(in, layout), i, a);
 }
 
 /// Fetches vertex i's clip position and the varyings the layout asks for (fetchVaryings()).

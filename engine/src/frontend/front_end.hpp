@@ -104,6 +104,9 @@ struct LaneInput {
     /// The clip positions, for the survivors' planes (LaneChunk::planes); null: the loop builds
     /// them one triangle at a time.
     const glm::vec4* clip = nullptr;
+    /// The varyings the planes carry (with `clip` only): the lanes gather them and set up their
+    /// planes too (LaneChunk::varying).
+    VaryingStreams varyings;
 };
 
 /// What the lanes stage tells the front end's loop of a chunk of up to kSize triangles: in
@@ -133,6 +136,9 @@ struct LaneChunk {
     std::int32_t base[2][kSize + kSlack];
     /// Planes::l1, l2, u1, u2 and q of each survivor, three floats each in that order.
     float plane[15][kSize + kSlack];
+    /// Planes::a0, d1 and d2 of each survivor: varying v's a0 at row v, its d1 at row
+    /// kMaxVaryings + v, its d2 at row 2·kMaxVaryings + v (rows of LaneInput::varyings' floats).
+    float varying[3 * kMaxVaryings][kSize + kSlack];
     std::size_t trianglesIn = 0;  ///< RenderStats' counters of the lanes' triangles
     std::size_t trianglesCulled = 0;
     std::size_t trianglesRasterized = 0;
@@ -141,7 +147,8 @@ struct LaneChunk {
 /// The lanes stage: reject, cull, box, and the exit for boxes without a pixel centre, for
 /// triangles [first, end) of `in` (end − first ≤ LaneChunk::kSize), a whole vector of
 /// triangles at once; then, with LaneInput::clip, the survivors' planes (makePlanes()'s double
-/// arithmetic lane by lane, bit for bit), a vector of survivors at once. Takes the triangles whose
+/// arithmetic lane by lane, bit for bit, and setVaryingPlanes()' float differences of the
+/// gathered varyings), a vector of survivors at once. Takes the triangles whose
 /// vertices are all in front of the near plane and in the guard band and whose snapped box spans
 /// under kLaneExtent grid units each way (so that every edge product fits 32 bits); leaves the
 /// others to the scalar path.

@@ -98,8 +98,12 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
     std::size_t fragments = 0;
     end = std::min(end, in.indices.size() / 3);
 
+    const VaryingStreams streams = varyingStreams(in, layout);
     auto fetch = [&](const std::uint32_t(&idx)[3], ClipVertex(&v)[3]) {
-        for (int j = 0; j < 3; ++j) v[j] = fetchVertex(in, layout, idx[j]);
+        for (int j = 0; j < 3; ++j) {
+            v[j].pos = in.clip[idx[j]];
+            fetchVaryings(streams, idx[j], v[j].a.data());
+        }
     };
     // 5. Planes of a triangle in the guard band that covers a pixel centre, then emit `setup`.
     auto planesAndEmit = [&](const ClipVertex(&v)[3]) {
@@ -219,8 +223,8 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
         return fragments;
     }
 
-    const LaneInput lanes{in.indices.data(), nv,       screen,        job.width, job.height,
-                          job.sampleReach,   job.cull, in.clip.data()};
+    const LaneInput lanes{in.indices.data(), nv,       screen,         job.width, job.height,
+                          job.sampleReach,   job.cull, in.clip.data(), streams};
     LaneChunk chunk;
     for (std::size_t c = first; c < end; c += LaneChunk::kSize) {
         job.lanes(lanes, c, std::min(end, c + LaneChunk::kSize), chunk);
@@ -253,14 +257,14 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
             }
             setup.box = {chunk.box[0][k], chunk.box[1][k], chunk.box[2][k], chunk.box[3][k]};
             setup.area2 = chunk.area2[k];
-            const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
             if (!chunk.planes) {
+                const std::uint32_t idx[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
                 ClipVertex v[3];
                 fetch(idx, v);
                 planesAndEmit(v);
                 continue;
             }
-            // 5. Planes built by the lanes; only the varyings are fetched here.
+            // 5. Planes built by the lanes, varyings included.
             const std::uint32_t j = survivor++;
             if (chunk.base[0][j] < 0) continue;  // degenerate in double: makePlanes() fails
             planes.baseX = chunk.base[0][j];
@@ -268,10 +272,10 @@ std::size_t frontEnd(const DrawJob& job, std::size_t first, std::size_t end, Emi
             float* const to[5] = {planes.l1, planes.l2, planes.u1, planes.u2, planes.q};
             for (int i = 0; i < 5; ++i)
                 for (int m = 0; m < 3; ++m) to[i][m] = chunk.plane[3 * i + m][j];
-            if (count > 0) {
-                float a[3][kMaxVaryings];
-                for (int m = 0; m < 3; ++m) fetchVaryings(in, layout, idx[m], a[m]);
-                setVaryingPlanes(a[0], a[1], a[2], count, planes);
+            for (int v = 0; v < count; ++v) {
+                planes.a0[v] = chunk.varying[v][j];
+                planes.d1[v] = chunk.varying[kMaxVaryings + v][j];
+                planes.d2[v] = chunk.varying[2 * kMaxVaryings + v][j];
             }
             fragments += emit(setup, planes);
         }

@@ -226,8 +226,54 @@ using Df = hn::Rebind<float, Dd>;
 using Dw = hn::Rebind<std::int32_t, Dd>;
 using VecD = hn::Vec<Dd>;
 
-/// Clip positions a survivor's gather may index: vertex i's floats start at 4i in 32 bits.
+/// Clip positions a survivor's gather may index: vertex i's floats start at 4i in 32 bits (and
+/// its varyings at 3i or 2i).
 constexpr std::size_t kPlaneVertices = std::size_t{1} << 29;
+
+using Dv = hn::ScalableTag<float>;
+using Dvi = hn::RebindToSigned<Dv>;
+
+/// setVaryingPlanes() of the survivors `which` [0, survivors) (padded to whole vectors): each
+/// varying of their three vertices gathered from its stream (a missing one's fill), a0 = a0,
+/// d1 = a1 − a0, d2 = a2 − a0 in float as the scalar loop rounds them, a whole vector of floats
+/// of survivors at once (twice the doubles' lanes).
+HWY_INLINE void varyingsOf(const LaneInput& in, const std::int32_t* indices,
+                           const std::int32_t* which, std::size_t survivors, LaneChunk& out) {
+    const Dv dv;
+    const Dvi dvi;
+    const std::size_t n = hn::Lanes(dv);
+    const VaryingStreams& streams = in.varyings;
+    for (std::size_t g = 0; g < survivors; g += n) {
+        const auto k3 = hn::Mul(hn::LoadU(dvi, which + g), hn::Set(dvi, 3));
+        hn::Vec<Dvi> vertex[3];
+        for (int j = 0; j < 3; ++j)
+            vertex[j] = hn::GatherIndex(dvi, indices, hn::Add(k3, hn::Set(dvi, j)));
+        std::size_t row = 0;
+        for (int k = 0; k < streams.count; ++k) {
+            const VaryingStream& stream = streams.s[k];
+            if (stream.data == nullptr) {
+                for (int c = 0; c < stream.size; ++c, ++row) {
+                    hn::StoreU(hn::Set(dv, stream.fill), dv, out.varying[row] + g);
+                    hn::StoreU(hn::Zero(dv), dv, out.varying[kMaxVaryings + row] + g);
+                    hn::StoreU(hn::Zero(dv), dv, out.varying[2 * kMaxVaryings + row] + g);
+                }
+                continue;
+            }
+            const auto size = hn::Set(dvi, stream.size);
+            const hn::Vec<Dvi> at[3] = {hn::Mul(vertex[0], size), hn::Mul(vertex[1], size),
+                                        hn::Mul(vertex[2], size)};
+            for (int c = 0; c < stream.size; ++c, ++row) {
+                const float* from = stream.data + c;
+                const auto a0 = hn::GatherIndex(dv, from, at[0]);
+                const auto a1 = hn::GatherIndex(dv, from, at[1]);
+                const auto a2 = hn::GatherIndex(dv, from, at[2]);
+                hn::StoreU(a0, dv, out.varying[row] + g);
+                hn::StoreU(hn::Sub(a1, a0), dv, out.varying[kMaxVaryings + row] + g);
+                hn::StoreU(hn::Sub(a2, a0), dv, out.varying[2 * kMaxVaryings + row] + g);
+            }
+        }
+    }
+}
 
 /// The planes of the chunk's survivors (those of out.at without kScalar, in that order), a
 /// vector of survivors at once: makePlanes() after screenPosition() and planeBase(), the same
@@ -245,8 +291,9 @@ HWY_INLINE void planesOf(const LaneInput& in, std::size_t chunk, LaneChunk& out)
         if ((out.at[e] & LaneChunk::kScalar) == 0)
             which[survivors++] = static_cast<std::int32_t>(out.at[e]);
     if (survivors == 0) return;
-    // A tail's missing lanes take the first survivor again (valid indices), stored past the end.
-    for (std::size_t i = survivors; i < survivors + n; ++i) which[i] = which[0];
+    // A tail's missing lanes take the first survivor again (valid indices), stored past the end
+    // (a vector of floats: the varyings' lanes, as many as the doubles' or more).
+    for (std::size_t i = survivors; i < survivors + hn::Lanes(Dv()); ++i) which[i] = which[0];
 
     const auto* indices = reinterpret_cast<const std::int32_t*>(in.indices + 3 * chunk);
     const float* clip = &in.clip[0].x;
@@ -310,6 +357,7 @@ HWY_INLINE void planesOf(const LaneInput& in, std::size_t chunk, LaneChunk& out)
                    out.base[0] + g);
         hn::StoreU(byi, dw, out.base[1] + g);
     }
+    varyingsOf(in, indices, which, survivors, out);
 }
 
 /// LaneSetupFn for this target.
