@@ -52,9 +52,9 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return evalLanes(p, dx, hn::Set(Df(), dy));
 }
 
-/// phongTerms().intensity and shade() lane by lane, `n` the interpolated normal: the same
-/// operations in the same order, the lengths by rsqrtLanes() and the specular power by
-/// unitPowLanes(), as the scalar loop's fastRsqrt() and unitPow().
+/// phongTerms().intensity and shade() lane by lane, before the clamp (for packColorLanes()), `n`
+/// the interpolated normal: the same operations in the same order, the lengths by rsqrtLanes() and
+/// the specular power by unitPowLanes(), as the scalar loop's fastRsqrt() and unitPow().
 HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
                                 const DrawConstants& k) {
     const Df d;
@@ -75,8 +75,9 @@ HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const 
     const VecF specular = unitPowLanes(nh, f.shininess);
     const VecF lit = all(f.diffuse) * nl + all(f.specular) * specular;
     const VecF intensity = all(f.ambientTerm) + hn::IfThenElseZero(nl > hn::Zero(d), lit);
-    return {clamp01Lanes(rgb.x * intensity), clamp01Lanes(rgb.y * intensity),
-            clamp01Lanes(rgb.z * intensity)};
+    // shade()'s clamp is left to packColorLanes(), whose toByteLanes() clamps the same way (NaN
+    // to 0 either way): the same bytes for four lane operations fewer per channel.
+    return {rgb.x * intensity, rgb.y * intensity, rgb.z * intensity};
 }
 
 /// Whether V's colour can be computed for all lanes at once (no texture lookups).
@@ -113,15 +114,13 @@ HWY_INLINE VecI vectorColorLanes(const VecF* a, const DrawConstants& k) {
         return colorLanes<V>(a, k);
 }
 
-/// How many live lanes make shading all lanes at once pay off: any for a plain colour (a few
-/// lane operations); two for Phong lighting, whose lanes cost about as many instructions as two
-/// scalar pixels (no sqrt or division since fastRsqrt(), and a scalar pixel is one long chain of
-/// dependent operations); half for texture lookups, whose lanes are dear: below that the scalar
-/// code shades the live lanes cheaper.
+/// How many live lanes make shading all lanes at once pay off: any for a plain colour or Phong
+/// lighting (a vector of Phong lanes costs fewer instructions than one scalar pixel, whose
+/// phongTerms() is one long chain of dependent scalar operations, plus the lane's varyings
+/// stored and reloaded to reach it); half for texture lookups, whose lanes are dear: below that
+/// the scalar code shades the live lanes cheaper.
 template <class V>
-inline constexpr int kMinVectorLanes = !kVectorColor<V>   ? (kLanes + 1) / 2
-                                       : V::kLayout.phong ? std::min(2, kLanes)
-                                                          : 1;
+inline constexpr int kMinVectorLanes = !kVectorColor<V> ? (kLanes + 1) / 2 : 1;
 
 /// fragmentWeights() lane by lane for an affine or perspective variant: the weights (m1, m2) of
 /// vertices 1 and 2 at the lanes' pixels, `depth` = 1/q there.
