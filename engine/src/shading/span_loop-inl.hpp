@@ -65,16 +65,22 @@ HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const 
     const Vec3Lanes toLight{all(f.light.x) - lw * p.x, all(f.light.y) - lw * p.y,
                             all(f.light.z) - lw * p.z};
     const Vec3Lanes l = scaleLanes(toLight, inverseLengthLanes(toLight));
-    const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
-    const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
-    const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
-    const VecF rh = inverseLengthLanes(halfway);
     const VecF nl = dotLanes(n, l) * rn;
-    // std::clamp(nh, 0, 1): the same for NaN too
-    const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
-    const VecF specular = unitPowLanes(nh, f.shininess);
-    const VecF lit = all(f.diffuse) * nl + all(f.specular) * specular;
-    const VecF intensity = all(f.ambientTerm) + hn::IfThenElseZero(nl > hn::Zero(d), lit);
+    const MaskF lit = nl > hn::Zero(d);
+    VecF intensity = all(f.ambientTerm);
+    // Where no lane faces the light (n·l ≤ 0, or not a number), I is the ambient term alone
+    // whatever the specular: the halfway vector and the power are skipped for the whole vector.
+    if (!hn::AllFalse(d, lit)) {
+        const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
+        const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
+        const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
+        const VecF rh = inverseLengthLanes(halfway);
+        // std::clamp(nh, 0, 1): the same for NaN too
+        const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
+        const VecF specular = unitPowLanes(nh, f.shininess);
+        const VecF diffuseAndSpecular = all(f.diffuse) * nl + all(f.specular) * specular;
+        intensity = intensity + hn::IfThenElseZero(lit, diffuseAndSpecular);
+    }
     // shade()'s clamp is left to packColorLanes(), whose toByteLanes() clamps the same way (NaN
     // to 0 either way): the same bytes for four lane operations fewer per channel.
     return {rgb.x * intensity, rgb.y * intensity, rgb.z * intensity};
