@@ -60,17 +60,19 @@ HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const 
     const Df d;
     const FastLighting& f = k.lighting;
     auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
-    const VecF rn = inverseLengthLanes(n);
     const VecF lw = all(f.light.w);
     const Vec3Lanes toLight{all(f.light.x) - lw * p.x, all(f.light.y) - lw * p.y,
                             all(f.light.z) - lw * p.z};
     const Vec3Lanes l = scaleLanes(toLight, inverseLengthLanes(toLight));
-    const VecF nl = dotLanes(n, l) * rn;
-    const MaskF lit = nl > hn::Zero(d);
+    const VecF nDotL = dotLanes(n, l);
     VecF intensity = all(f.ambientTerm);
     // Where no lane faces the light (n·l ≤ 0, or not a number), I is the ambient term alone
-    // whatever the specular: the halfway vector and the power are skipped for the whole vector.
-    if (!hn::AllFalse(d, lit)) {
+    // whatever the specular: |n|, the halfway vector and the power are skipped for the whole
+    // vector. n·l·(1/|n|) > 0 needs n·l > 0, 1/|n| being 0 or positive.
+    if (!hn::AllFalse(d, nDotL > hn::Zero(d))) {
+        const VecF rn = inverseLengthLanes(n);
+        const VecF nl = nDotL * rn;
+        const MaskF lit = nl > hn::Zero(d);
         const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
         const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
         const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
