@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
+#include <glm/geometric.hpp>
 
 #include "coverage/coverage.hpp"
 #include "facet/advanced/draw.hpp"
@@ -287,6 +288,71 @@ TEST(SimdTargetsSmallTriangles, EveryTargetGivesTheScalarImage) {
     REQUIRE_SHARED_SCENE(textured, "course/example_textured");
     ASSERT_NE(textured->texture, nullptr);
     expectEveryTargetGivesTheScalarImage(smallTriangleScene(*textured), "small_triangles");
+}
+
+/// Phong's lane shortcuts against the scalar loop: a flat grid whose vertex normals are tiny
+/// (|n|² interpolates to subnormal values, which rsqrtLanes() scales on its slow path), exactly
+/// opposed (|n| passes through zero) or unit and turned away from the light (whole vectors where
+/// no lane faces it, whose halfway vector and power lightLanes() skips), next to lit unit ones.
+Scene phongShortcutScene() {
+    Mesh grid;
+    constexpr int kSide = 12;
+    for (int y = 0; y <= kSide; ++y)
+        for (int x = 0; x <= kSide; ++x) {
+            grid.positions.emplace_back(static_cast<float>(x - kSide / 2),
+                                        static_cast<float>(y - kSide / 2), 0.0f);
+            const float tiny = 1e-21f;
+            const glm::vec3 normals[4] = {
+                {0.0f, 0.0f, (x + y) % 2 ? tiny : -tiny},
+                {x % 2 ? 1.0f : -1.0f, 0.0f, 0.0f},
+                {0.0f, 0.0f, -1.0f},
+                glm::normalize(
+                    glm::vec3(static_cast<float>(x - 6), static_cast<float>(y - 6), 4.0f))};
+            grid.normals.push_back(normals[(x / 3 + y / 3) % 4]);
+        }
+    for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) {
+            const auto at = [](int i, int j) { return static_cast<std::uint32_t>(j * 13 + i); };
+            grid.indices.insert(grid.indices.end(), {at(x, y), at(x + 1, y), at(x + 1, y + 1),
+                                                     at(x, y), at(x + 1, y + 1), at(x, y + 1)});
+        }
+    Scene scene = test::sceneOf(std::move(grid),
+                                test::lookAt({1.0, 2.0, 14.0}, {0.0, 0.0, 0.0}, 90.0, 131, 93));
+    scene.lighting.light.position = {2.0, -3.0, 5.0, 1.0};
+    scene.lighting.material = Material{0.2, 0.6, 0.8, 20.0};
+    return scene;
+}
+
+TEST(SimdTargetsPhong, TinyOpposedAndUnlitNormalsGiveTheScalarImage) {
+    const std::vector<std::int64_t> targets = runnableTargets();
+    ASSERT_FALSE(targets.empty());
+    const Scene scene = phongShortcutScene();
+    for (const Interp interp : {Interp::Perspective, Interp::Affine}) {
+        RenderSettings settings;
+        settings.shader = ShaderKind::Painter;
+        settings.lighting = Lighting::Phong;
+        settings.interp = interp;
+        Renderer renderer;
+        Framebuffer scalar;
+        detail::enableSpanLoops(false);
+        ASSERT_GT(renderer.render(scene, settings, scalar).value().fragments, 0u);
+        detail::enableSpanLoops(true);
+        // The shortcuts must be reached: some pixels lit beyond the ambient term, some not.
+        std::size_t distinct = 0;
+        for (std::size_t i = 1; i < scalar.color.size(); ++i)
+            distinct += scalar.color[i] != scalar.color[i - 1] ? 1 : 0;
+        EXPECT_GT(distinct, 100u);
+        for (const std::int64_t target : targets) {
+            hwy::SetSupportedTargetsForTest(target);
+            Framebuffer vector;
+            ASSERT_TRUE(renderer.render(scene, settings, vector).ok());
+            std::size_t diffs = 0;
+            for (std::size_t i = 0; i < scalar.color.size(); ++i)
+                diffs += scalar.color[i] != vector.color[i] ? 1 : 0;
+            EXPECT_EQ(diffs, 0u) << hwy::TargetName(target);
+        }
+        hwy::SetSupportedTargetsForTest(0);
+    }
 }
 
 /// The block loop's variants in the direct test: no depth test (every covered pixel is

@@ -75,19 +75,26 @@ HWY_INLINE VecF dotLanes(const Vec3Lanes& a, const Vec3Lanes& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;  // glm::dot's order: (x + y) + z
 }
 
-/// fastRsqrt() lane by lane: the same integer guess and Newton steps in the same order, so the
-/// same float on every target (not hn::ApproximateReciprocalSqrt, whose guess differs between
+/// fastRsqrt() lane by lane for the lanes where x > 0 (the others are left unspecified, for
+/// inverseLengthLanes() to zero): the same integer guess and Newton steps in the same order, so
+/// the same float on every target (not hn::ApproximateReciprocalSqrt, whose guess differs between
 /// targets: 12 bits with SSE4 and AVX2, 14 with AVX-512).
 HWY_INLINE VecF rsqrtLanes(VecF x) {
     const Df d;
     const Di di;
-    const MaskF tiny = x < hn::Set(d, kRsqrtMinNormal);
-    const VecF xs = hn::IfThenElse(tiny, x * hn::Set(d, kRsqrtScaleUp), x);
-    const VecF half = hn::Set(d, 0.5f) * xs;
+    // Zero lanes are not scaled: inverseLengthLanes() sets them to 0 whatever they hold.
+    const MaskF tiny = hn::And(x<hn::Set(d, kRsqrtMinNormal), x> hn::Zero(d));
     const VecF threeHalves = hn::Set(d, 1.5f);
-    VecF y = hn::BitCast(d, hn::Set(di, kRsqrtGuess) - hn::ShiftRight<1>(hn::BitCast(di, xs)));
-    y = y * (threeHalves - half * y * y);
-    y = y * (threeHalves - half * y * y);
+    const auto newton = [&](VecF xs) HWY_ATTR {
+        const VecF half = hn::Set(d, 0.5f) * xs;
+        VecF y = hn::BitCast(d, hn::Set(di, kRsqrtGuess) - hn::ShiftRight<1>(hn::BitCast(di, xs)));
+        y = y * (threeHalves - half * y * y);
+        return y * (threeHalves - half * y * y);
+    };
+    // Subnormal lengths are rare: one test for the whole vector instead of two blends per
+    // call; the lanes' values are the same either way.
+    if (HWY_LIKELY(hn::AllFalse(d, tiny))) return newton(x);
+    const VecF y = newton(hn::IfThenElse(tiny, x * hn::Set(d, kRsqrtScaleUp), x));
     return hn::IfThenElse(tiny, y * hn::Set(d, kRsqrtScaleBack), y);
 }
 

@@ -175,13 +175,14 @@ HWY_NOINLINE std::size_t rasterizeMsaaSpans(const MsaaContext& ctx, const Covera
             for (int j = 0; j < kCount; ++j)
                 a[j] = hn::Set(d, p.a0[j]) + m1 * hn::Set(d, p.d1[j]) + m2 * hn::Set(d, p.d2[j]);
 
-            // The packed colour per pixel: all lanes at once when most are live (see the span
-            // loop), else lane by lane through the scalar shading.
+            // The packed colour per pixel: all lanes at once when enough are live (as in the
+            // span loop: any for plain colours and Phong, half for texture lookups), else lane
+            // by lane through the scalar shading.
             hn::Vec<Du> color = hn::Zero(du);
             if constexpr (kColor) {
                 bool done = false;
                 if constexpr (kVectorColor<V> || kVectorTexture<V>) {
-                    if (std::popcount(shaded) >= kLanes / 2) {
+                    if (std::popcount(shaded) >= kMinVectorLanes<V>) {
                         if constexpr (kVectorTexture<V>)
                             color = hn::BitCast(
                                 du, bilinearPackedLanes(k.texture->level(0), a[V::kLayout.uvAt()],

@@ -52,31 +52,40 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return evalLanes(p, dx, hn::Set(Df(), dy));
 }
 
-/// phongTerms().intensity and shade() lane by lane, `n` the interpolated normal: the same
-/// operations in the same order, the lengths by rsqrtLanes() and the specular power by
-/// unitPowLanes(), as the scalar loop's fastRsqrt() and unitPow().
+/// phongTerms().intensity and shade() lane by lane, before the clamp (for packColorLanes()), `n`
+/// the interpolated normal: the same operations in the same order, the lengths by rsqrtLanes() and
+/// the specular power by unitPowLanes(), as the scalar loop's fastRsqrt() and unitPow().
 HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
                                 const DrawConstants& k) {
     const Df d;
     const FastLighting& f = k.lighting;
     auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
-    const VecF rn = inverseLengthLanes(n);
     const VecF lw = all(f.light.w);
     const Vec3Lanes toLight{all(f.light.x) - lw * p.x, all(f.light.y) - lw * p.y,
                             all(f.light.z) - lw * p.z};
     const Vec3Lanes l = scaleLanes(toLight, inverseLengthLanes(toLight));
-    const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
-    const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
-    const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
-    const VecF rh = inverseLengthLanes(halfway);
-    const VecF nl = dotLanes(n, l) * rn;
-    // std::clamp(nh, 0, 1): the same for NaN too
-    const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
-    const VecF specular = unitPowLanes(nh, f.shininess);
-    const VecF lit = all(f.diffuse) * nl + all(f.specular) * specular;
-    const VecF intensity = all(f.ambientTerm) + hn::IfThenElseZero(nl > hn::Zero(d), lit);
-    return {clamp01Lanes(rgb.x * intensity), clamp01Lanes(rgb.y * intensity),
-            clamp01Lanes(rgb.z * intensity)};
+    const VecF nDotL = dotLanes(n, l);
+    VecF intensity = all(f.ambientTerm);
+    // Where no lane faces the light (n·l ≤ 0, or not a number), I is the ambient term alone
+    // whatever the specular: |n|, the halfway vector and the power are skipped for the whole
+    // vector. n·l·(1/|n|) > 0 needs n·l > 0, 1/|n| being 0 or positive.
+    if (!hn::AllFalse(d, nDotL > hn::Zero(d))) {
+        const VecF rn = inverseLengthLanes(n);
+        const VecF nl = nDotL * rn;
+        const MaskF lit = nl > hn::Zero(d);
+        const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
+        const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
+        const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
+        const VecF rh = inverseLengthLanes(halfway);
+        // std::clamp(nh, 0, 1): the same for NaN too
+        const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
+        const VecF specular = unitPowLanes(nh, f.shininess);
+        const VecF diffuseAndSpecular = all(f.diffuse) * nl + all(f.specular) * specular;
+        intensity = intensity + hn::IfThenElseZero(lit, diffuseAndSpecular);
+    }
+    // shade()'s clamp is left to packColorLanes(), whose toByteLanes() clamps the same way (NaN
+    // to 0 either way): the same bytes for four lane operations fewer per channel.
+    return {rgb.x * intensity, rgb.y * intensity, rgb.z * intensity};
 }
 
 /// Whether V's colour can be computed for all lanes at once (no texture lookups).
@@ -113,15 +122,13 @@ HWY_INLINE VecI vectorColorLanes(const VecF* a, const DrawConstants& k) {
         return colorLanes<V>(a, k);
 }
 
-/// How many live lanes make shading all lanes at once pay off: any for a plain colour (a few
-/// lane operations); two for Phong lighting, whose lanes cost about as many instructions as two
-/// scalar pixels (no sqrt or division since fastRsqrt(), and a scalar pixel is one long chain of
-/// dependent operations); half for texture lookups, whose lanes are dear: below that the scalar
-/// code shades the live lanes cheaper.
+/// How many live lanes make shading all lanes at once pay off: any for a plain colour or Phong
+/// lighting (a vector of Phong lanes costs fewer instructions than one scalar pixel, whose
+/// phongTerms() is one long chain of dependent scalar operations, plus the lane's varyings
+/// stored and reloaded to reach it); half for texture lookups, whose lanes are dear: below that
+/// the scalar code shades the live lanes cheaper.
 template <class V>
-inline constexpr int kMinVectorLanes = !kVectorColor<V>   ? (kLanes + 1) / 2
-                                       : V::kLayout.phong ? std::min(2, kLanes)
-                                                          : 1;
+inline constexpr int kMinVectorLanes = !kVectorColor<V> ? (kLanes + 1) / 2 : 1;
 
 /// fragmentWeights() lane by lane for an affine or perspective variant: the weights (m1, m2) of
 /// vertices 1 and 2 at the lanes' pixels, `depth` = 1/q there.

@@ -26,6 +26,7 @@ HWY_INLINE VecF unitPowLanes(VecF x, float s) {
     const Df d;
     const Di di;
     auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
+    if (s == 0.0f) return all(1.0f);  // the same per draw: tested once, not per lane
     const MaskF tiny = x < all(kMinNormal);
     const VecF xs = hn::IfThenElse(tiny, x * all(kTwo24), x);
     const VecI bits = hn::BitCast(di, xs);
@@ -49,8 +50,7 @@ HWY_INLINE VecF unitPowLanes(VecF x, float s) {
     const VecF scale = hn::BitCast(d, hn::ShiftLeft<23>(n + hn::Set(di, 127)));
     const VecF r = hn::IfThenElseZero(inRange, q * scale);
     const VecF one = all(1.0f);
-    const MaskF unit = hn::Or(x == one, hn::Set(d, s) == hn::Zero(d));
-    return hn::IfThenElse(unit, one, hn::IfThenElse(x > hn::Zero(d), r, x));
+    return hn::IfThenElse(x == one, one, hn::IfThenElse(x > hn::Zero(d), r, x));
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE
