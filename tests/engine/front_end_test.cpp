@@ -304,7 +304,7 @@ TEST_P(Binning, HandsEachTileWhatTheFrontEndEmitted) {
         job.sampleReach = c.reach;
         renderer.draw(
             job,
-            [&](const CoverageSetup& setup, const Planes& planes) {
+            [&](const CoverageSetup& setup, const Planes& planes, const PixelTarget&) {
                 return recordTile(&binned, setup, planes);
             },
             threads, stats);

@@ -37,7 +37,7 @@ inline constexpr float kRsqrtScaleBack = 4096.0f;          ///< 2^12
 /// contraction), so rsqrtLanes() in lanes-inl.hpp gives the same float on every SIMD target and
 /// the scalar and vector loops the same image. A subnormal x is scaled into normal range first,
 /// where the guess holds.
-inline float fastRsqrt(float x) {
+[[gnu::always_inline]] inline float fastRsqrt(float x) {
     const bool tiny = x < kRsqrtMinNormal;
     const float xs = tiny ? x * kRsqrtScaleUp : x;
     const float half = 0.5f * xs;
@@ -49,7 +49,7 @@ inline float fastRsqrt(float x) {
 
 /// 1/|v| by fastRsqrt(), or 0 where |v| = 0 (or is not a number): what makes an undefined
 /// direction contribute nothing.
-inline float inverseLength(const glm::vec3& v) {
+[[gnu::always_inline]] inline float inverseLength(const glm::vec3& v) {
     const float length2 = glm::dot(v, v);
     return length2 > 0.0f ? fastRsqrt(length2) : 0.0f;
 }
@@ -102,9 +102,13 @@ inline float lightIntensity(const glm::vec3& p, const glm::vec3& n, const glm::v
 /// n·l and n·h are the dot products with the raw vectors times 1/|n| and 1/|n|·1/|h|, the
 /// same values to float rounding for three multiplies fewer per normalisation. lightLanes()
 /// in the vector loops does the same operations in the same order.
+// Always inlined, like the samplers (samplers.hpp): the vector loops' textured fallback calls it
+// per pixel, and out of line it was compiled for the baseline target, whose legacy SSE code
+// called from AVX code pays a state transition per call.
 template <class Pow>
-inline LightTerms phongTerms(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
-                             const FastLighting& lighting, Pow pow) {
+[[gnu::always_inline]] inline LightTerms phongTerms(const glm::vec3& p, const glm::vec3& n,
+                                                    const glm::vec3& eye,
+                                                    const FastLighting& lighting, Pow pow) {
     LightTerms t;
     const float rn = detail::inverseLength(n);
     const glm::vec3 toLight = glm::vec3(lighting.light) - lighting.light.w * p;  // as lightTerms()
@@ -123,7 +127,7 @@ inline LightTerms phongTerms(const glm::vec3& p, const glm::vec3& n, const glm::
 }
 
 /// The lit colour clamp(rgb · I, 0, 1).
-inline glm::vec3 shade(const glm::vec3& rgb, float intensity) {
+[[gnu::always_inline]] inline glm::vec3 shade(const glm::vec3& rgb, float intensity) {
     return glm::clamp(rgb * intensity, 0.0f, 1.0f);
 }
 

@@ -31,7 +31,7 @@ inline constexpr float kMinExponent = -125.0f;
 
 /// x^s for x in [0, 1] and s ≥ 0 (+inf included): 1 when x = 1 or s = 0, x itself when x is not
 /// positive (0 stays 0, NaN stays NaN), else 2^(s·log2 x).
-inline float unitPow(float x, float s) {
+[[gnu::always_inline]] inline float unitPow(float x, float s) {
     if (x == 1.0f || s == 0.0f) return 1.0f;
     if (!(x > 0.0f)) return x;
     // log2 x = e + log2 m, m ∈ [√½, √2); a subnormal x is scaled up into normal range first.
