@@ -43,14 +43,16 @@ struct Drawn {
     RenderStats stats;
 };
 
-/// `scene` rendered with the tile buffer and hierarchical depth on or off.
+/// `scene` rendered with the tile buffer always or never used (whatever the draw's overdraw),
+/// and hierarchical depth on or off.
 Drawn render(const Scene& scene, const RenderSettings& settings, bool tileBuffer, bool hiZ) {
-    detail::enableTileBuffer(tileBuffer);
+    detail::useTileBuffer(tileBuffer ? detail::TileBufferUse::Always
+                                     : detail::TileBufferUse::Never);
     detail::enableHiZ(hiZ);
     Renderer renderer;
     Drawn d;
     d.stats = renderer.render(scene, settings, d.frame).value();
-    detail::enableTileBuffer(true);
+    detail::useTileBuffer(detail::TileBufferUse::Overdrawn);
     detail::enableHiZ(true);
     return d;
 }
@@ -176,6 +178,28 @@ TEST(TileBuffer, BoundKeepsWhatIsInFront) {
             if (tilt == 0.0f) EXPECT_EQ(on.stats.hiZTriangles, 2u);
         }
     }
+}
+
+// The default choice (the buffer only where the boxes cover the frame twice or more): the 8
+// layers reside, a torus knot framed in part of the frame is drawn in the frame after a clear;
+// both give the image drawn without the buffer.
+TEST(TileBuffer, DefaultChoiceGivesTheImageDrawnInTheFrame) {
+    const Scene scenes[] = {layers(8, false, 333, 197),
+                            sceneOf(colouredByPosition(makeTorusKnot(2, 3, 64, 12)),
+                                    lookAt({0.4, 0.3, -9.0}, {0.3, 0.2, 0}, 333, 333, 197))};
+    for (const Scene& scene : scenes)
+        for (int threads : {1, 2}) {
+            RenderSettings settings;
+            settings.shader = ShaderKind::Painter;
+            settings.background = 0x336699;
+            settings.threads = threads;
+            Renderer renderer;
+            Drawn byDefault;
+            byDefault.stats = renderer.render(scene, settings, byDefault.frame).value();
+            const Drawn off = render(scene, settings, false, true);
+            ASSERT_GT(off.stats.fragments, 0u);
+            EXPECT_EQ(differences(byDefault.frame, off.frame), 0u) << threads << " threads";
+        }
 }
 
 }  // namespace

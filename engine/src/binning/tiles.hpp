@@ -91,9 +91,12 @@ struct TileFrame {
     bool hiZ = false;  ///< the draw tests depth (LESS): keep a far bound per tile
 };
 
-/// Switches the per-thread tile buffer (on by default) off or on, for tests that compare the
-/// image drawn with and without it; not thread-safe against draws in progress.
-void enableTileBuffer(bool enabled);
+/// When a one-batch solid draw uses the per-thread tile buffer: never, when its triangles' boxes
+/// cover the frame at least twice (the default; see run()), or always.
+enum class TileBufferUse { Never, Overdrawn, Always };
+/// Sets when the tile buffer is used, for tests that compare the image drawn with and without
+/// it; not thread-safe against draws in progress.
+void useTileBuffer(TileBufferUse use);
 /// Switches hierarchical depth (on by default) off or on, for the same kind of tests.
 void enableHiZ(bool enabled);
 
@@ -138,6 +141,7 @@ class TileRenderer {
         int varyings = 0;
         std::vector<BinEntry> entries;      // grown, never shrunk
         std::size_t entryCount = 0;         // entries of this batch
+        std::uint64_t boxPixels = 0;        // the batch's boxes' pixels: how much it may draw
         std::vector<std::uint32_t> start;   // per tile, and one past the last
         std::vector<std::uint32_t> cursor;  // per tile, the sort's scratch
         std::vector<std::uint32_t> order;   // record offsets, tile by tile
