@@ -55,6 +55,7 @@ inline constexpr int kMaxBlockSide = 4;
 
 /// The covered pixels [lo, hi] of a row whose edge values at pixel x0 are e[i] (steps stepX[i]
 /// per pixel), within [x0, x1]; false when none. Exact: E(x) ≥ 0 solved in integers per edge.
+/// (s · width fits: steps are bounded by the guard band, widths by the image.)
 inline bool coveredSpan(const std::int64_t (&e)[3], const std::int64_t (&stepX)[3], int x0, int x1,
                         int& lo, int& hi) {
     const std::int64_t width = x1 - x0;
@@ -64,10 +65,15 @@ inline bool coveredSpan(const std::int64_t (&e)[3], const std::int64_t (&stepX)[
         if (s == 0) {
             if (v < 0) return false;
         } else if (s > 0) {  // rising: inside from k ≥ ceil(−v / s)
-            if (v < 0) first = std::max(first, (-v + s - 1) / s);
+            if (v < 0) {
+                if (v + s * width < 0) return false;  // still outside at the row's end
+                first = std::max(first, (-v + s - 1) / s);
+            }
         } else {  // falling: inside up to k ≤ floor(v / −s)
             if (v < 0) return false;
-            last = std::min(last, v / -s);
+            // Divided only where the edge leaves the row (a 64-bit division costs tens of
+            // cycles; in a large triangle most rows of a tile lie wholly inside most edges).
+            if (v + s * width < 0) last = std::min(last, v / -s);
         }
     }
     if (first > last) return false;
