@@ -343,9 +343,10 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
 
     // The draw, then the passes after it.
     RenderStats stats = draw(input, settings, frame, &background);
+    // The clear the draw did (stats.clearMs so far) is reported as the clear, not as raster.
+    stats.rasterMs = std::max(0.0, msSince(t) - stats.clearMs);
     stats.clearMs += clearMs;
     stats.vertexMs = vertexMs;
-    stats.rasterMs = msSince(t);
     stats.vertexBytes = vertexBytes(settings, mesh, variantKey(settings, input));
     if (settings.showNormals)
         normalsOverlay.draw(mesh, vertexNormals, cam, settings, input.nearPlane, frame, stats);
