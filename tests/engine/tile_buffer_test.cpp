@@ -180,11 +180,12 @@ TEST(TileBuffer, BoundKeepsWhatIsInFront) {
     }
 }
 
-// The default choice (the buffer only where the boxes cover the frame twice or more): the 8
-// layers reside, a torus knot framed in part of the frame is drawn in the frame after a clear;
-// both give the image drawn without the buffer.
+// The default choice (the buffer only on a frame larger than the caches whose boxes cover it
+// twice or more): 8 full-screen layers at 1920×1080 reside, the same layers at 333×197 and a
+// torus knot framed in part of the frame are drawn in the frame after a clear; all give the
+// image drawn without the buffer.
 TEST(TileBuffer, DefaultChoiceGivesTheImageDrawnInTheFrame) {
-    const Scene scenes[] = {layers(8, false, 333, 197),
+    const Scene scenes[] = {layers(8, false, 1920, 1080), layers(8, false, 333, 197),
                             sceneOf(colouredByPosition(makeTorusKnot(2, 3, 64, 12)),
                                     lookAt({0.4, 0.3, -9.0}, {0.3, 0.2, 0}, 333, 333, 197))};
     for (const Scene& scene : scenes)

@@ -91,8 +91,9 @@ struct TileFrame {
     bool hiZ = false;  ///< the draw tests depth (LESS): keep a far bound per tile
 };
 
-/// When a one-batch solid draw uses the per-thread tile buffer: never, when its triangles' boxes
-/// cover the frame at least twice (the default; see run()), or always.
+/// When a one-batch solid draw uses the per-thread tile buffer: never, when the frame is larger
+/// than the caches and its triangles' boxes cover it at least twice (the default; see run()), or
+/// always.
 enum class TileBufferUse { Never, Overdrawn, Always };
 /// Sets when the tile buffer is used, for tests that compare the image drawn with and without
 /// it; not thread-safe against draws in progress.
