@@ -175,7 +175,9 @@ TEST(TileBuffer, BoundKeepsWhatIsInFront) {
             // Flat: the two behind are rejected; tilted, the far bounds of their tiles are
             // behind them; the two in front never are.
             EXPECT_LE(on.stats.hiZTriangles, 2u) << "tilt " << tilt;
-            if (tilt == 0.0f) EXPECT_EQ(on.stats.hiZTriangles, 2u);
+            if (tilt == 0.0f) {
+                EXPECT_EQ(on.stats.hiZTriangles, 2u);
+            }
         }
     }
 }

@@ -85,7 +85,7 @@ void withVaryingCount(int n, F&& f) {
 struct TileFrame {
     Framebuffer* fb = nullptr;  ///< null: the raster writes elsewhere and ignores its target
     /// Clear the frame to `background` (depth kEmptyDepth) before drawing: in each tile's buffer
-    /// when the draw is one batch (see run()), else in a pass over the frame first.
+    /// where the draw is tile-resident (see run()), else in a pass over the frame.
     bool clear = false;
     std::uint32_t background = 0;
     bool hiZ = false;  ///< the draw tests depth (LESS): keep a far bound per tile

@@ -25,11 +25,14 @@ void clearFrame(Framebuffer& fb, std::uint32_t rgba, int threads) {
     const std::ptrdiff_t parts =
         std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, n / kParallelPixels));
 #pragma omp parallel for num_threads(static_cast <int>(parts)) if (parts > 1)
-    for (std::ptrdiff_t p = 0; p < parts; ++p) {
-        const std::ptrdiff_t b = n * p / parts, e = n * (p + 1) / parts;
-        std::fill(fb.color.begin() + b, fb.color.begin() + e, rgba);
-        std::fill(fb.depth.begin() + b, fb.depth.begin() + e, kEmptyDepth);
-    }
+    for (std::ptrdiff_t p = 0; p < parts; ++p)
+        clearPixels(fb, rgba, static_cast<std::size_t>(n * p / parts),
+                    static_cast<std::size_t>(n * (p + 1) / parts));
+}
+
+void clearPixels(Framebuffer& fb, std::uint32_t rgba, std::size_t begin, std::size_t end) {
+    std::fill(fb.color.data() + begin, fb.color.data() + end, rgba);
+    std::fill(fb.depth.data() + begin, fb.depth.data() + end, kEmptyDepth);
 }
 
 void resolveDepthColors(Framebuffer& fb, RenderStats& stats, int threads) {

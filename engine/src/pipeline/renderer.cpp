@@ -172,7 +172,7 @@ RenderStats Renderer::Impl::draw(const DrawInput& input, const RenderSettings& s
     const int sampleCount = settings.mode == DrawMode::Solid ? msaaSamples(settings.msaa) : 1;
     const SampleBlock block = sampleBlock(sampleCount);
     Framebuffer& target = sampleCount > 1 ? samples : frame;
-    // The one-sample solid draw clears in its tiles; the others in a pass first.
+    // The tile renderer clears a one-sample solid draw (TileFrame); the others clear here.
     const bool tileClear = settings.mode == DrawMode::Solid && sampleCount == 1;
     if (clear && !tileClear) {
         Clock::time_point t = Clock::now();
@@ -328,8 +328,9 @@ RenderStats Renderer::Impl::renderView(const Scene& scene, const Camera& cam,
     (void)frame.resize(cam.width, cam.height);  // within the limits: checked by checkFrame
     const int threads = resolveThreads(settings.threads);
     const std::uint32_t background = rgbaFromHex(settings.background);
-    // The clear is the draw's (draw() below): a one-batch solid draw clears each tile in a
-    // thread's tile buffer; the others clear the frame in a pass first.
+    // The clear is the draw's (draw() below): the tile renderer clears a one-sample solid draw,
+    // in its tile buffers where the draw is tile-resident, else in a pass after binning; the
+    // other draws clear the frame in a pass first.
     const double clearMs = msSince(t);
 
     // Vertex stage: only the streams the settings need.
