@@ -25,7 +25,7 @@ namespace facet::detail {
 namespace {
 
 /// Triangles each thread's front end takes per batch. One thread: few enough that the batch's
-/// records (80 to 264 bytes each) and bins are still in the core's L2 when its tiles read them
+/// records (64 to 248 bytes each) and bins are still in the core's L2 when its tiles read them
 /// (with 8192 the tile loop waited on memory for every record). Several threads: every batch
 /// costs two barriers, and on a loaded machine a barrier waits for a descheduled thread's next
 /// time slice; the bunny at 2 threads took twice as long with 2048 as with 8192 (load 17 on 2
@@ -37,11 +37,40 @@ constexpr std::size_t kBatchPerThreadShared = 8192;
 /// drawn in the tile buffer (see run()).
 constexpr std::uint64_t kResidentOverdraw = 2;
 
-/// Bytes of a record with `varyings` varyings, a multiple of 8 so that the edges stay aligned.
-constexpr std::size_t recordBytes(int varyings) {
+/// Bytes of a record with `varyings` varyings whose head is `head` bytes, a multiple of 8 so
+/// that the edges stay aligned.
+constexpr std::size_t recordBytes(int varyings, std::size_t head) {
     const std::size_t planes =
         varyings == 0 ? 0 : kWeightBytes + 3 * sizeof(float) * static_cast<std::size_t>(varyings);
-    return (sizeof(RecordHead) + planes + 7) / 8 * 8;
+    return (head + planes + 7) / 8 * 8;
+}
+static_assert(recordBytes(0, sizeof(RecordHead)) == sizeof(TileRenderer::Line));
+
+/// Writes the head of a record in place (records start at multiples of 8 bytes in cache-line
+/// aligned storage): a head built on the stack and copied cost a spill and a reload per field.
+template <class Head>
+void writeHead(std::byte* record, const CoverageSetup& setup, const Planes& planes) {
+    auto* head = new (record) Head;
+    for (int i = 0; i < 3; ++i) head->e0[i] = setup.e0[i];
+    for (int i = 0; i < 2; ++i) {  // the vertex differences: the steps are ∓256 times them
+        head->dx[i] = static_cast<std::int32_t>(setup.stepY[i] >> kSubPixelBits);
+        head->dy[i] = static_cast<std::int32_t>(-(setup.stepX[i] >> kSubPixelBits));
+    }
+    for (int i = 0; i < 3; ++i) head->q[i] = planes.q[i];
+    if constexpr (std::is_same_v<Head, RecordHead>) {
+        // Boxes and bases lie in the image, whose sides are at most kMaxCompactSide here.
+        const auto u16 = [](int v) { return static_cast<std::uint16_t>(v); };
+        head->x0 = u16(setup.box.x0);
+        head->y0 = u16(setup.box.y0);
+        head->x1 = u16(setup.box.x1);
+        head->y1 = u16(setup.box.y1);
+        head->baseX = u16(planes.baseX);
+        head->baseY = u16(planes.baseY);
+    } else {
+        head->rect = setup.box;
+        head->baseX = planes.baseX;
+        head->baseY = planes.baseY;
+    }
 }
 
 void addCounters(RenderStats& to, const RenderStats& from) {
@@ -69,20 +98,12 @@ struct Binner {
                                       (at + s.recordBytes) / sizeof(TileRenderer::Line) + 1));
         std::byte* record = reinterpret_cast<std::byte*>(s.records.data()) + at;
         s.used = at + s.recordBytes;
-        // Written in place (records start at multiples of 8 bytes in cache-line aligned
-        // storage): a head built on the stack and copied cost a spill and a reload per field.
-        auto* head = new (record) RecordHead;
-        for (int i = 0; i < 3; ++i) head->e0[i] = setup.e0[i];
-        head->box = setup.box;
-        for (int i = 0; i < 2; ++i) {  // the vertex differences: the steps are ∓256 times them
-            head->dx[i] = static_cast<std::int32_t>(setup.stepY[i] >> kSubPixelBits);
-            head->dy[i] = static_cast<std::int32_t>(-(setup.stepX[i] >> kSubPixelBits));
-        }
-        head->baseX = planes.baseX;
-        head->baseY = planes.baseY;
-        for (int i = 0; i < 3; ++i) head->q[i] = planes.q[i];
+        if (s.compact)
+            writeHead<RecordHead>(record, setup, planes);
+        else
+            writeHead<WideRecordHead>(record, setup, planes);
         if (s.varyings > 0) {
-            std::byte* rest = record + sizeof(RecordHead);
+            std::byte* rest = record + (s.compact ? sizeof(RecordHead) : sizeof(WideRecordHead));
             std::memcpy(rest, planes.l1, kWeightBytes);
             rest += kWeightBytes;
             withVaryingCount(s.varyings, [&](auto count) {
@@ -271,7 +292,9 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
         slice.used = 0;
         slice.stats = {};
         slice.varyings = job.layout.count();
-        slice.recordBytes = recordBytes(slice.varyings);
+        slice.compact = RecordHead::fits(width, height);
+        slice.recordBytes = recordBytes(
+            slice.varyings, slice.compact ? sizeof(RecordHead) : sizeof(WideRecordHead));
     }
     const int slices = static_cast<int>(n);
     const int tasks = slices + tiles;  // per step: the front end's slices, then the tiles

@@ -48,20 +48,50 @@ inline DrawJob drawJob(const DrawInput& in, const VaryingLayout& layout,
 /// A record's head: the triangle's edges as the tile side reads them (the edge values at the
 /// box's first pixel centre in 64 bits; the steps from two edges' vertex differences, in 32 bits
 /// since the guard band bounds them, the third edge's being minus their sum) and the planes'
-/// base and depth plane. Keeping the edges, not the snapped vertices, spares every tile the
+/// depth plane, then the box and the planes' base in 16 bits (both lie in the image, whose sides
+/// are at most kMaxCompactSide here): 64 bytes, so a triangle without varyings is one aligned
+/// cache line (at 80 bytes most records straddled two, and the tile loop, reading them in tile
+/// order, missed on both). Keeping the edges, not the snapped vertices, spares every tile the
 /// triangle touches their rebuild (edgesOf, ~90 instructions: on the 1M-triangle sphere that
 /// cost more than the smaller record saved). A draw without varyings needs nothing more (the
 /// weights of vertices 1 and 2 only interpolate varyings); with varyings the weights' planes
 /// (l1, l2, u1, u2) and a0, d1 and d2 of the layout's varyings follow.
 struct RecordHead {
     std::int64_t e0[3];
-    PixelRect box;
     std::int32_t dx[2], dy[2];
-    int baseX, baseY;
     float q[3];
+    std::uint16_t x0, y0, x1, y1;  ///< the box
+    std::uint16_t baseX, baseY;
+
+    /// The box.
+    PixelRect box() const { return {x0, y0, x1, y1}; }
+    /// Whether a frame of width × height keeps its coordinates in this head.
+    static constexpr bool fits(int width, int height) {
+        return width <= kMaxCompactSide && height <= kMaxCompactSide;
+    }
+    /// Largest image side whose pixel coordinates fit 16 bits unsigned.
+    static constexpr int kMaxCompactSide = 65536;
 };
-static_assert(sizeof(RecordHead) == 80 && alignof(RecordHead) == 8);
-static_assert(std::is_trivially_copyable_v<RecordHead> && std::is_trivially_copyable_v<Planes>);
+static_assert(sizeof(RecordHead) == 64 && alignof(RecordHead) == 8);
+
+/// RecordHead for frames with a side over RecordHead::kMaxCompactSide (a supersampled frame may
+/// reach 16 × kMaxImageSide): the box and base in 32 bits, 80 bytes.
+struct WideRecordHead {
+    std::int64_t e0[3];
+    std::int32_t dx[2], dy[2];
+    float q[3];
+    PixelRect rect;
+    int baseX, baseY;
+
+    /// The box.
+    PixelRect box() const { return rect; }
+};
+static_assert(sizeof(WideRecordHead) == 80 && alignof(WideRecordHead) == 8);
+static_assert(std::is_trivially_copyable_v<RecordHead> &&
+              std::is_trivially_copyable_v<WideRecordHead> && std::is_trivially_copyable_v<Planes>);
+
+/// How many records ahead of the one being drawn the tile loop prefetches.
+inline constexpr std::uint32_t kPrefetchAhead = 4;
 
 /// Bytes of the weights' planes: l1, l2, u1 and u2, adjacent in Planes.
 inline constexpr std::size_t kWeightBytes = 12 * sizeof(float);
@@ -121,8 +151,8 @@ class TileRenderer {
         run(job, threads, stats, {&drawTileWith<Raster>, &raster}, frame);
     }
 
-    /// A record's storage: cache-line aligned, records packed at multiples of 8 bytes (80
-    /// bytes for a triangle without varyings).
+    /// A record's storage: cache-line aligned, records packed at multiples of 8 bytes (64
+    /// bytes, one line, for a triangle without varyings).
     struct alignas(64) Line {
         std::byte bytes[64];
     };
@@ -140,10 +170,11 @@ class TileRenderer {
         std::size_t used = 0;       // bytes of `records` holding this batch's records
         std::size_t recordBytes = 0;
         int varyings = 0;
-        std::vector<BinEntry> entries;      // grown, never shrunk
-        std::size_t entryCount = 0;         // entries of this batch
-        std::uint64_t boxPixels = 0;        // the batch's boxes' pixels: how much it may draw
-        std::vector<std::uint32_t> start;   // per tile, and one past the last
+        bool compact = true;               // heads are RecordHead, else WideRecordHead (see fits())
+        std::vector<BinEntry> entries;     // grown, never shrunk
+        std::size_t entryCount = 0;        // entries of this batch
+        std::uint64_t boxPixels = 0;       // the batch's boxes' pixels: how much it may draw
+        std::vector<std::uint32_t> start;  // per tile, and one past the last
         std::vector<std::uint32_t> cursor;  // per tile, the sort's scratch
         std::vector<std::uint32_t> order;   // record offsets, tile by tile
         int tilesX = 0;
@@ -191,6 +222,11 @@ class TileRenderer {
     template <class Raster>
     std::size_t rasterizeTile(const Raster& raster, const TileTask& task) const;
 
+    /// rasterizeTile() for one slice whose records begin with a Head.
+    template <class Head, class Raster>
+    std::size_t rasterizeSlice(const Raster& raster, const Slice& slice, std::size_t tile,
+                               const PixelRect& rect, const PixelTarget& target) const;
+
     std::vector<Slice> slices_;           // one set per thread, two when binning overlaps the tiles
     std::vector<ScreenVertex> screen_;    // the vertex pass's output, one per clip position
     std::vector<std::size_t> fragments_;  // per thread
@@ -205,47 +241,67 @@ std::size_t TileRenderer::rasterizeTile(const Raster& raster, const TileTask& ta
     const PixelRect rect{x0, y0, std::min(x0 + kTileSize, width_) - 1,
                          std::min(y0 + kTileSize, height_) - 1};
     std::size_t fragments = 0;
-    CoverageSetup setup{};  // area2 is never read by the pixel loops
-    Planes planes{};        // what the record does not hold is never read (RecordHead)
     const auto at = static_cast<std::size_t>(task.tile);
     for (std::size_t s = task.first; s < task.first + task.count; ++s) {  // submission order
         const Slice& slice = slices_[s];
-        const auto* records = reinterpret_cast<const std::byte*>(slice.records.data());
-        withVaryingCount(slice.varyings, [&](auto varyings) {
-            constexpr std::size_t n = sizeof(float) * decltype(varyings)::value;
-            for (std::uint32_t k = slice.start[at]; k < slice.start[at + 1]; ++k) {
-                const std::byte* record = records + slice.order[k];
-                RecordHead head;
-                std::memcpy(&head, record, sizeof head);
-                const std::int64_t dx[3] = {head.dx[0], head.dx[1], -(head.dx[0] + head.dx[1])};
-                const std::int64_t dy[3] = {head.dy[0], head.dy[1], -(head.dy[0] + head.dy[1])};
-                for (int i = 0; i < 3; ++i) {  // as edgesOf() derives them
-                    setup.e0[i] = head.e0[i];
-                    setup.stepX[i] = -dy[i] * kSubPixel;
-                    setup.stepY[i] = dx[i] * kSubPixel;
-                }
-                setup.box = head.box;
-                // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
-                const PixelRect& b = setup.box;
-                if (b.x0 < rect.x0 || b.y0 < rect.y0 || b.x1 > rect.x1 || b.y1 > rect.y1) {
-                    setup = restrictSetup(setup, rect);
-                    if (setup.box.empty()) continue;
-                }
-                planes.baseX = head.baseX;
-                planes.baseY = head.baseY;
-                std::memcpy(planes.q, head.q, sizeof head.q);
-                if constexpr (n > 0) {
-                    const std::byte* rest = record + sizeof head;
-                    std::memcpy(planes.l1, rest, kWeightBytes);
-                    rest += kWeightBytes;
-                    std::memcpy(planes.a0, rest, n);
-                    std::memcpy(planes.d1, rest + n, n);
-                    std::memcpy(planes.d2, rest + 2 * n, n);
-                }
-                fragments += raster(setup, planes, *task.target);
-            }
-        });
+        fragments += slice.compact
+                         ? rasterizeSlice<RecordHead>(raster, slice, at, rect, *task.target)
+                         : rasterizeSlice<WideRecordHead>(raster, slice, at, rect, *task.target);
     }
+    return fragments;
+}
+
+template <class Head, class Raster>
+std::size_t TileRenderer::rasterizeSlice(const Raster& raster, const Slice& slice, std::size_t tile,
+                                         const PixelRect& rect, const PixelTarget& target) const {
+    std::size_t fragments = 0;
+    CoverageSetup setup{};  // area2 is never read by the pixel loops
+    Planes planes{};        // what the record does not hold is never read (RecordHead)
+    const auto* records = reinterpret_cast<const std::byte*>(slice.records.data());
+    const std::uint32_t* order = slice.order.data();
+    const std::uint32_t first = slice.start[tile], end = slice.start[tile + 1];
+    const std::size_t bytes = slice.recordBytes;
+    withVaryingCount(slice.varyings, [&](auto varyings) {
+        constexpr std::size_t n = sizeof(float) * decltype(varyings)::value;
+        for (std::uint32_t k = first; k < end; ++k) {
+            // The records of a tile are scattered through the slice (and with several threads
+            // written by another core): fetch a few ahead while this one is drawn.
+            if (k + kPrefetchAhead < end) {
+                const std::byte* next = records + order[k + kPrefetchAhead];
+                for (std::size_t line = 0; line < bytes; line += sizeof(Line))
+                    __builtin_prefetch(next + line);
+            }
+            const std::byte* record = records + order[k];
+            Head head;
+            std::memcpy(&head, record, sizeof head);
+            const std::int64_t dx[3] = {head.dx[0], head.dx[1], -(head.dx[0] + head.dx[1])};
+            const std::int64_t dy[3] = {head.dy[0], head.dy[1], -(head.dy[0] + head.dy[1])};
+            for (int i = 0; i < 3; ++i) {  // as edgesOf() derives them
+                setup.e0[i] = head.e0[i];
+                setup.stepX[i] = -dy[i] * kSubPixel;
+                setup.stepY[i] = dx[i] * kSubPixel;
+            }
+            setup.box = head.box();
+            // Most triangles of a dense mesh lie in one tile: their setup needs no clipping.
+            const PixelRect& b = setup.box;
+            if (b.x0 < rect.x0 || b.y0 < rect.y0 || b.x1 > rect.x1 || b.y1 > rect.y1) {
+                setup = restrictSetup(setup, rect);
+                if (setup.box.empty()) continue;
+            }
+            planes.baseX = head.baseX;
+            planes.baseY = head.baseY;
+            std::memcpy(planes.q, head.q, sizeof head.q);
+            if constexpr (n > 0) {
+                const std::byte* rest = record + sizeof head;
+                std::memcpy(planes.l1, rest, kWeightBytes);
+                rest += kWeightBytes;
+                std::memcpy(planes.a0, rest, n);
+                std::memcpy(planes.d1, rest + n, n);
+                std::memcpy(planes.d2, rest + 2 * n, n);
+            }
+            fragments += raster(setup, planes, target);
+        }
+    });
     return fragments;
 }
 
