@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -18,8 +19,10 @@
 #include <emmintrin.h>
 #endif
 
+#include "facet/limits.hpp"
 #include "frontend/front_end_loop.hpp"
 #include "passes/frame_passes.hpp"
+#include "passes/supersample.hpp"
 
 namespace facet::detail {
 namespace {
@@ -37,40 +40,34 @@ constexpr std::size_t kBatchPerThreadShared = 8192;
 /// drawn in the tile buffer (see run()).
 constexpr std::uint64_t kResidentOverdraw = 2;
 
-/// Bytes of a record with `varyings` varyings whose head is `head` bytes, a multiple of 8 so
-/// that the edges stay aligned.
-constexpr std::size_t recordBytes(int varyings, std::size_t head) {
+/// Bytes of a record with `varyings` varyings, a multiple of 8 so that the edges stay aligned.
+constexpr std::size_t recordBytes(int varyings) {
     const std::size_t planes =
         varyings == 0 ? 0 : kWeightBytes + 3 * sizeof(float) * static_cast<std::size_t>(varyings);
-    return (head + planes + 7) / 8 * 8;
+    return (sizeof(RecordHead) + planes + 7) / 8 * 8;
 }
-static_assert(recordBytes(0, sizeof(RecordHead)) == sizeof(TileRenderer::Line));
+static_assert(recordBytes(0) == sizeof(TileRenderer::Line), "a painter triangle is one line");
+// Every frame the engine draws has its sides within RecordHead's 16-bit coordinates.
+static_assert(std::int64_t{kMaxImageSide} * kMaxSupersample <= kMaxRecordSide);
 
 /// Writes the head of a record in place (records start at multiples of 8 bytes in cache-line
 /// aligned storage): a head built on the stack and copied cost a spill and a reload per field.
-template <class Head>
 void writeHead(std::byte* record, const CoverageSetup& setup, const Planes& planes) {
-    auto* head = new (record) Head;
+    auto* head = new (record) RecordHead;
     for (int i = 0; i < 3; ++i) head->e0[i] = setup.e0[i];
     for (int i = 0; i < 2; ++i) {  // the vertex differences: the steps are ∓256 times them
         head->dx[i] = static_cast<std::int32_t>(setup.stepY[i] >> kSubPixelBits);
         head->dy[i] = static_cast<std::int32_t>(-(setup.stepX[i] >> kSubPixelBits));
     }
     for (int i = 0; i < 3; ++i) head->q[i] = planes.q[i];
-    if constexpr (std::is_same_v<Head, RecordHead>) {
-        // Boxes and bases lie in the image, whose sides are at most kMaxCompactSide here.
-        const auto u16 = [](int v) { return static_cast<std::uint16_t>(v); };
-        head->x0 = u16(setup.box.x0);
-        head->y0 = u16(setup.box.y0);
-        head->x1 = u16(setup.box.x1);
-        head->y1 = u16(setup.box.y1);
-        head->baseX = u16(planes.baseX);
-        head->baseY = u16(planes.baseY);
-    } else {
-        head->rect = setup.box;
-        head->baseX = planes.baseX;
-        head->baseY = planes.baseY;
-    }
+    // Boxes and bases lie in the image (kMaxRecordSide).
+    const auto u16 = [](int v) { return static_cast<std::uint16_t>(v); };
+    head->x0 = u16(setup.box.x0);
+    head->y0 = u16(setup.box.y0);
+    head->x1 = u16(setup.box.x1);
+    head->y1 = u16(setup.box.y1);
+    head->baseX = u16(planes.baseX);
+    head->baseY = u16(planes.baseY);
 }
 
 void addCounters(RenderStats& to, const RenderStats& from) {
@@ -98,12 +95,9 @@ struct Binner {
                                       (at + s.recordBytes) / sizeof(TileRenderer::Line) + 1));
         std::byte* record = reinterpret_cast<std::byte*>(s.records.data()) + at;
         s.used = at + s.recordBytes;
-        if (s.compact)
-            writeHead<RecordHead>(record, setup, planes);
-        else
-            writeHead<WideRecordHead>(record, setup, planes);
+        writeHead(record, setup, planes);
         if (s.varyings > 0) {
-            std::byte* rest = record + (s.compact ? sizeof(RecordHead) : sizeof(WideRecordHead));
+            std::byte* rest = record + sizeof(RecordHead);
             std::memcpy(rest, planes.l1, kWeightBytes);
             rest += kWeightBytes;
             withVaryingCount(s.varyings, [&](auto count) {
@@ -240,6 +234,7 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
     const int width = job.width, height = job.height;
     const std::size_t triangles = in.indices.size() / 3;
     if (width <= 0 || height <= 0) return;
+    assert(width <= kMaxRecordSide && height <= kMaxRecordSide);  // see kMaxRecordSide
     const auto n = static_cast<std::size_t>(std::max(1, threads));
     const std::size_t batch = (n == 1 ? kBatchPerThread : kBatchPerThreadShared) * n;
     const std::size_t batches = (triangles + batch - 1) / batch;
@@ -292,9 +287,7 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
         slice.used = 0;
         slice.stats = {};
         slice.varyings = job.layout.count();
-        slice.compact = RecordHead::fits(width, height);
-        slice.recordBytes = recordBytes(
-            slice.varyings, slice.compact ? sizeof(RecordHead) : sizeof(WideRecordHead));
+        slice.recordBytes = recordBytes(slice.varyings);
     }
     const int slices = static_cast<int>(n);
     const int tasks = slices + tiles;  // per step: the front end's slices, then the tiles

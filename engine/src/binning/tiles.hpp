@@ -49,7 +49,7 @@ inline DrawJob drawJob(const DrawInput& in, const VaryingLayout& layout,
 /// box's first pixel centre in 64 bits; the steps from two edges' vertex differences, in 32 bits
 /// since the guard band bounds them, the third edge's being minus their sum) and the planes'
 /// depth plane, then the box and the planes' base in 16 bits (both lie in the image, whose sides
-/// are at most kMaxCompactSide here): 64 bytes, so a triangle without varyings is one aligned
+/// are at most kMaxRecordSide): 64 bytes, so a triangle without varyings is one aligned
 /// cache line (at 80 bytes most records straddled two, and the tile loop, reading them in tile
 /// order, missed on both). Keeping the edges, not the snapped vertices, spares every tile the
 /// triangle touches their rebuild (edgesOf, ~90 instructions: on the 1M-triangle sphere that
@@ -65,30 +65,13 @@ struct RecordHead {
 
     /// The box.
     PixelRect box() const { return {x0, y0, x1, y1}; }
-    /// Whether a frame of width × height keeps its coordinates in this head.
-    static constexpr bool fits(int width, int height) {
-        return width <= kMaxCompactSide && height <= kMaxCompactSide;
-    }
-    /// Largest image side whose pixel coordinates fit 16 bits unsigned.
-    static constexpr int kMaxCompactSide = 65536;
 };
+/// Largest image side whose pixel coordinates RecordHead holds (16 bits unsigned); the engine's
+/// frames are at most kMaxImageSide × kMaxSupersample = 65536 (tiles.cpp checks).
+inline constexpr int kMaxRecordSide = 65536;
 static_assert(sizeof(RecordHead) == 64 && alignof(RecordHead) == 8);
 
-/// RecordHead for frames with a side over RecordHead::kMaxCompactSide (a supersampled frame may
-/// reach 16 × kMaxImageSide): the box and base in 32 bits, 80 bytes.
-struct WideRecordHead {
-    std::int64_t e0[3];
-    std::int32_t dx[2], dy[2];
-    float q[3];
-    PixelRect rect;
-    int baseX, baseY;
-
-    /// The box.
-    PixelRect box() const { return rect; }
-};
-static_assert(sizeof(WideRecordHead) == 80 && alignof(WideRecordHead) == 8);
-static_assert(std::is_trivially_copyable_v<RecordHead> &&
-              std::is_trivially_copyable_v<WideRecordHead> && std::is_trivially_copyable_v<Planes>);
+static_assert(std::is_trivially_copyable_v<RecordHead> && std::is_trivially_copyable_v<Planes>);
 
 /// How many records ahead of the one being drawn the tile loop prefetches.
 inline constexpr std::uint32_t kPrefetchAhead = 4;
@@ -170,11 +153,10 @@ class TileRenderer {
         std::size_t used = 0;       // bytes of `records` holding this batch's records
         std::size_t recordBytes = 0;
         int varyings = 0;
-        bool compact = true;               // heads are RecordHead, else WideRecordHead (see fits())
-        std::vector<BinEntry> entries;     // grown, never shrunk
-        std::size_t entryCount = 0;        // entries of this batch
-        std::uint64_t boxPixels = 0;       // the batch's boxes' pixels: how much it may draw
-        std::vector<std::uint32_t> start;  // per tile, and one past the last
+        std::vector<BinEntry> entries;      // grown, never shrunk
+        std::size_t entryCount = 0;         // entries of this batch
+        std::uint64_t boxPixels = 0;        // the batch's boxes' pixels: how much it may draw
+        std::vector<std::uint32_t> start;   // per tile, and one past the last
         std::vector<std::uint32_t> cursor;  // per tile, the sort's scratch
         std::vector<std::uint32_t> order;   // record offsets, tile by tile
         int tilesX = 0;
@@ -222,8 +204,8 @@ class TileRenderer {
     template <class Raster>
     std::size_t rasterizeTile(const Raster& raster, const TileTask& task) const;
 
-    /// rasterizeTile() for one slice whose records begin with a Head.
-    template <class Head, class Raster>
+    /// rasterizeTile() for one slice's records.
+    template <class Raster>
     std::size_t rasterizeSlice(const Raster& raster, const Slice& slice, std::size_t tile,
                                const PixelRect& rect, const PixelTarget& target) const;
 
@@ -243,15 +225,12 @@ std::size_t TileRenderer::rasterizeTile(const Raster& raster, const TileTask& ta
     std::size_t fragments = 0;
     const auto at = static_cast<std::size_t>(task.tile);
     for (std::size_t s = task.first; s < task.first + task.count; ++s) {  // submission order
-        const Slice& slice = slices_[s];
-        fragments += slice.compact
-                         ? rasterizeSlice<RecordHead>(raster, slice, at, rect, *task.target)
-                         : rasterizeSlice<WideRecordHead>(raster, slice, at, rect, *task.target);
+        fragments += rasterizeSlice(raster, slices_[s], at, rect, *task.target);
     }
     return fragments;
 }
 
-template <class Head, class Raster>
+template <class Raster>
 std::size_t TileRenderer::rasterizeSlice(const Raster& raster, const Slice& slice, std::size_t tile,
                                          const PixelRect& rect, const PixelTarget& target) const {
     std::size_t fragments = 0;
@@ -268,11 +247,14 @@ std::size_t TileRenderer::rasterizeSlice(const Raster& raster, const Slice& slic
             // written by another core): fetch a few ahead while this one is drawn.
             if (k + kPrefetchAhead < end) {
                 const std::byte* next = records + order[k + kPrefetchAhead];
-                for (std::size_t line = 0; line < bytes; line += sizeof(Line))
-                    __builtin_prefetch(next + line);
+                __builtin_prefetch(next);
+                if constexpr (n > 0) {  // the planes: up to two more lines
+                    __builtin_prefetch(next + sizeof(Line));
+                    if (bytes > 2 * sizeof(Line)) __builtin_prefetch(next + 2 * sizeof(Line));
+                }
             }
             const std::byte* record = records + order[k];
-            Head head;
+            RecordHead head;
             std::memcpy(&head, record, sizeof head);
             const std::int64_t dx[3] = {head.dx[0], head.dx[1], -(head.dx[0] + head.dx[1])};
             const std::int64_t dy[3] = {head.dy[0], head.dy[1], -(head.dy[0] + head.dy[1])};
