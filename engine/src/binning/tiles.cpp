@@ -62,10 +62,21 @@ void writeHead(std::byte* record, const CoverageSetup& setup, const Planes& plan
     for (int i = 0; i < 3; ++i) head->q[i] = planes.q[i];
     // Boxes and bases lie in the image (kMaxRecordSide).
     const auto u16 = [](int v) { return static_cast<std::uint16_t>(v); };
+#if defined(__SSE2__)
+    // The box's low halves gathered by three shuffles (GCC packed them by shifts and ORs, ten
+    // instructions more per record).
+    static_assert(offsetof(RecordHead, y1) == offsetof(RecordHead, x0) + 6);
+    __m128i box = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&setup.box));
+    box = _mm_shufflelo_epi16(box, _MM_SHUFFLE(3, 3, 2, 0));  // x0, y0 in the first 32 bits
+    box = _mm_shufflehi_epi16(box, _MM_SHUFFLE(3, 3, 2, 0));  // x1, y1 in the third
+    box = _mm_shuffle_epi32(box, _MM_SHUFFLE(3, 3, 2, 0));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(&head->x0), box);
+#else
     head->x0 = u16(setup.box.x0);
     head->y0 = u16(setup.box.y0);
     head->x1 = u16(setup.box.x1);
     head->y1 = u16(setup.box.y1);
+#endif
     head->baseX = u16(planes.baseX);
     head->baseY = u16(planes.baseY);
 }
@@ -145,7 +156,10 @@ void sortByTile(TileRenderer::Slice& s) {
         s.start[t + 1] += s.start[t];
         s.cursor[t] = s.start[t];
     }
-    if (s.order.size() < s.entryCount) s.order.resize(std::max(2 * s.order.size(), s.entryCount));
+    // kPrefetchAhead entries more, for the tile loop's prefetch past the last record: offsets
+    // of records in the slice's storage (zero when new, else a batch's before).
+    const std::size_t needed = s.entryCount + kPrefetchAhead;
+    if (s.order.size() < needed) s.order.resize(std::max(2 * s.order.size(), needed));
     std::uint32_t* order = s.order.data();
     for (std::size_t i = 0; i < s.entryCount; ++i)
         order[s.cursor[entries[i].tile]++] = entries[i].offset;

@@ -158,7 +158,7 @@ class TileRenderer {
         std::uint64_t boxPixels = 0;        // the batch's boxes' pixels: how much it may draw
         std::vector<std::uint32_t> start;   // per tile, and one past the last
         std::vector<std::uint32_t> cursor;  // per tile, the sort's scratch
-        std::vector<std::uint32_t> order;   // record offsets, tile by tile
+        std::vector<std::uint32_t> order;   // record offsets, tile by tile, kPrefetchAhead more
         int tilesX = 0;
         RenderStats stats;
     };
@@ -245,13 +245,13 @@ std::size_t TileRenderer::rasterizeSlice(const Raster& raster, const Slice& slic
         for (std::uint32_t k = first; k < end; ++k) {
             // The records of a tile are scattered through the slice (and with several threads
             // written by another core): fetch a few ahead while this one is drawn.
-            if (k + kPrefetchAhead < end) {
-                const std::byte* next = records + order[k + kPrefetchAhead];
-                __builtin_prefetch(next);
-                if constexpr (n > 0) {  // the planes: up to two more lines
-                    __builtin_prefetch(next + sizeof(Line));
-                    if (bytes > 2 * sizeof(Line)) __builtin_prefetch(next + 2 * sizeof(Line));
-                }
+            // order[] has kPrefetchAhead entries past the batch's last (sortByTile), so no
+            // test: past the tile's last record this fetches the next tile's first ones.
+            const std::byte* next = records + order[k + kPrefetchAhead];
+            __builtin_prefetch(next);
+            if constexpr (n > 0) {  // the planes: up to two more lines
+                __builtin_prefetch(next + sizeof(Line));
+                if (bytes > 2 * sizeof(Line)) __builtin_prefetch(next + 2 * sizeof(Line));
             }
             const std::byte* record = records + order[k];
             RecordHead head;
