@@ -304,7 +304,6 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
         slice.recordBytes = recordBytes(slice.varyings);
     }
     const int slices = static_cast<int>(n);
-    const int tasks = slices + tiles;  // per step: the front end's slices, then the tiles
     const ScreenSpace space = ScreenSpace::of(width, height, in.nearPlane, job.subPixelBits);
     const auto vertices = static_cast<std::ptrdiff_t>(in.clip.size());
     screen_.resize(in.clip.size());  // grown, never shrunk: a steady frame allocates nothing
@@ -313,6 +312,14 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
     binned.screen = screen;
     binned.lanes = laneSetup();  // the SIMD target, chosen once per draw
 
+    // Thread i's share of the frame: tiles [tileShareBegin(i), tileShareBegin(i + 1)), rows of
+    // tiles from the top, as the in-draw clear below splits the frame's pixels.
+    const auto tileShareBegin = [&](std::size_t i) {
+        return static_cast<int>(static_cast<std::size_t>(tiles) * i / n);
+    };
+    if (shares_.size() < 2 * n) shares_ = std::vector<TileShare>(2 * n);
+    for (std::size_t i = 0; i < 2 * n; ++i)
+        shares_[i].next.store(tileShareBegin(i % n), std::memory_order_relaxed);
     double clearMs = 0;  // the in-draw clear pass when the batch does not reside
 #pragma omp parallel num_threads(slices)
     {
@@ -352,34 +359,54 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
             Slice* produce = slices_.data() + (k % sets) * n;
             const std::size_t consume = ((k + 1) % sets) * n;
             const std::size_t b0 = k * batch, b1 = std::min(triangles, b0 + batch);
-#pragma omp for schedule(dynamic, 1)
-            for (int task = 0; task < tasks; ++task) {
-                // Several threads: the slices first, being the longest tasks. One thread: the
-                // tiles first, since they read the set that its slice then overwrites.
-                const int t = n == 1 ? (task + slices) % tasks : task;
-                if (t < slices) {
-                    if (k == batches) continue;
-                    Slice& slice = produce[t];
-                    slice.entryCount = 0;
-                    slice.boxPixels = 0;
-                    slice.used = 0;
-                    const auto s = static_cast<std::size_t>(t);
-                    const std::size_t first = b0 + (b1 - b0) * s / n;
-                    const std::size_t end = b0 + (b1 - b0) * (s + 1) / n;
-                    // Clocked per batch, not per triangle: the front end with the records'
-                    // writes inlined, then the sort of its records into the tiles' bins.
-                    const Clock::time_point t0 = Clock::now();
-                    front::frontEnd(binned, first, end, Binner{slice}, slice.stats);
-                    const Clock::time_point t1 = Clock::now();
-                    sortByTile(slice);
-                    const Clock::time_point t2 = Clock::now();
-                    slice.stats.frontEndMs += msBetween(t0, t1);
-                    slice.stats.binningMs += msBetween(t1, t2);
-                } else if (k > 0) {
-                    const int tile = t - slices;
-                    fragments += drawTile(tile, consume, n, drawer, frame, resident, hiZ);
-                }
+            const auto bin = [&](std::size_t s) {  // the front end of slice s of batch k
+                Slice& slice = produce[s];
+                slice.entryCount = 0;
+                slice.boxPixels = 0;
+                slice.used = 0;
+                const std::size_t first = b0 + (b1 - b0) * s / n;
+                const std::size_t end = b0 + (b1 - b0) * (s + 1) / n;
+                // Clocked per batch, not per triangle: the front end with the records'
+                // writes inlined, then the sort of its records into the tiles' bins.
+                const Clock::time_point t0 = Clock::now();
+                front::frontEnd(binned, first, end, Binner{slice}, slice.stats);
+                const Clock::time_point t1 = Clock::now();
+                sortByTile(slice);
+                const Clock::time_point t2 = Clock::now();
+                slice.stats.frontEndMs += msBetween(t0, t1);
+                slice.stats.binningMs += msBetween(t1, t2);
+            };
+            if (n == 1) {  // the tiles first: they read the set that the slice then overwrites
+                if (k > 0)
+                    for (int tile = 0; tile < tiles; ++tile)
+                        fragments += drawTile(tile, consume, n, drawer, frame, resident, hiZ);
+                if (k < batches) bin(0);
+                continue;
             }
+            // Several threads: each bins its own slice (the vertices its vertex pass wrote),
+            // then draws the tiles of batch k − 1 from its own share of the frame, then helps
+            // with the others' (see TileShare). Tile t is drawn by the same thread in every
+            // batch unless another ran out of work first, so its colour and depth stay in that
+            // core's cache between batches instead of moving to whichever thread took it.
+            // The team may be smaller than asked (a thread limit): thread i then does the
+            // slices and shares i, i + team, ...
+            const auto me = static_cast<std::size_t>(omp_get_thread_num());
+            const auto team = static_cast<std::size_t>(omp_get_num_threads());
+            for (std::size_t s = me; s < n; s += team) {
+                shares_[((k + 1) % 2) * n + s].next.store(  // for step k + 1, after the barrier
+                    tileShareBegin(s), std::memory_order_relaxed);
+                if (k < batches) bin(s);
+            }
+            if (k > 0)
+                for (std::size_t r = 0; r < n; ++r) {
+                    const std::size_t owner = (me + r) % n;
+                    TileShare& share = shares_[(k % 2) * n + owner];
+                    const int end = tileShareBegin(owner + 1);
+                    for (int tile = share.next.fetch_add(1, std::memory_order_relaxed); tile < end;
+                         tile = share.next.fetch_add(1, std::memory_order_relaxed))
+                        fragments += drawTile(tile, consume, n, drawer, frame, resident, hiZ);
+                }
+#pragma omp barrier
         }
         fragments_[static_cast<std::size_t>(omp_get_thread_num())] = fragments;
     }

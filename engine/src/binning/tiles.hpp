@@ -9,6 +9,7 @@
 // threads ever own the same tile.
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -214,6 +215,12 @@ class TileRenderer {
     std::vector<std::size_t> fragments_;  // per thread
     std::vector<TileBuffer> buffers_;     // per thread, when the draw is tile-resident
     std::vector<TileDepth> depths_;       // per tile, the hierarchical depth
+    /// A thread's share of a step's tiles: the next one not yet taken, by it or by a thread
+    /// that finished its own; its own cache line, as every thread takes from it.
+    struct alignas(64) TileShare {
+        std::atomic<int> next{0};
+    };
+    std::vector<TileShare> shares_;  // per thread, two steps (one in use, one being reset)
     int width_ = 0, height_ = 0, tilesX_ = 0;  // the draw being run
 };
 
