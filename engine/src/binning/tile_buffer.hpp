@@ -34,6 +34,7 @@ inline constexpr int kDepthBlocksPerSide = 8;
 struct TileDepth {
     float far = kEmptyDepth;
     std::uint64_t stale = 0;
+    int skip = 0;  ///< tests left that pass over stale blocks' recomputes (kRecomputeSkip)
     std::size_t rejected = 0;
     float blockFar[kDepthBlocksPerSide * kDepthBlocksPerSide];
 
@@ -124,8 +125,12 @@ inline bool coversTile(const CoverageSetup& s, const PixelRect& tile) {
 
 /// The blocks (bit i: block i of TileDepth) that `box`, inside `tile`, overlaps.
 inline std::uint64_t blockMask(const PixelRect& box, const PixelRect& tile) {
-    const int bx0 = (box.x0 - tile.x0) / kDepthBlock, bx1 = (box.x1 - tile.x0) / kDepthBlock;
-    const int by0 = (box.y0 - tile.y0) / kDepthBlock, by1 = (box.y1 - tile.y0) / kDepthBlock;
+    // The box is inside the tile: the offsets are ≥ 0, unsigned division is a shift.
+    const auto block = [](int offset) {
+        return static_cast<unsigned>(offset) / unsigned{kDepthBlock};
+    };
+    const unsigned bx0 = block(box.x0 - tile.x0), bx1 = block(box.x1 - tile.x0);
+    const unsigned by0 = block(box.y0 - tile.y0), by1 = block(box.y1 - tile.y0);
     const std::uint64_t columns = (0xFFu >> (7 - bx1)) & (0xFFu << bx0);
     const std::uint64_t rows =
         (~std::uint64_t{0} >> (56 - 8 * by1)) & (~std::uint64_t{0} << (8 * by0));
@@ -159,29 +164,61 @@ inline std::uint64_t blockMask(const PixelRect& box, const PixelRect& tile) {
     return far;
 }
 
+/// Tests that may pass over a stale block's recompute after one failed: a triangle in front of
+/// what a block holds (most of a dense mesh's, drawn in front) would pay a recompute each; one
+/// behind is then rejected a few triangles later, and the block's bound, exact again, rejects
+/// the rest without a recompute. (Passing over a recompute never rejects more.)
+inline constexpr int kRecomputeSkip = 4;
+
+/// Boxes this wide or tall (pixels − 1) are tested against the tile's bound alone: a loop over
+/// their many blocks per tile cost more than it rejected (8 full-screen layers at 4K drawn back
+/// to front: +1.1 % instructions with every box tested against its blocks).
+inline constexpr int kBlockTestBox = 16;
+
 /// Whether no pixel of `box` (inside target.tile) can pass a LESS depth test against what the
 /// tile holds: the nearest depth the plane `p` takes over the box is not in front of the tile's
-/// far bound, or of the far bound of any block the box overlaps (`blocks`, blockMask()). The
+/// far bound, or of the far bound of every block the box overlaps (`blocks`, blockMask()). The
 /// blocks' bounds known exactly come first (one in front decides: no reject); then a stale bound
 /// that would fail is recomputed from the stored depths. A few compares when nothing is known.
 inline bool hiddenBehind(const Planes& p, const PixelRect& box, std::uint64_t blocks,
                          const PixelTarget& target, TileDepth& bound) {
+    if (box.x1 - box.x0 >= kBlockTestBox || box.y1 - box.y0 >= kBlockTestBox) {
+        if (!(bound.far < kEmptyDepth)) [[likely]]
+            return false;
+        float lo = 0.0f, hi = 0.0f;
+        return depthRange(p, box, lo, hi) && lo >= bound.far;
+    }
+    std::uint64_t stale = blocks & bound.stale;
+    if (stale != 0 && bound.skip != 0) {  // this test uses the stale bounds as they are
+        --bound.skip;
+        stale = 0;
+    }
     float far = 0.0f;
-    for (std::uint64_t m = blocks & ~bound.stale; m != 0; m &= m - 1)
-        far = std::fmax(far, bound.blockFar[std::countr_zero(m)]);
-    if (!(far < kEmptyDepth) && !(bound.far < kEmptyDepth)) [[likely]]
+    for (std::uint64_t m = blocks & ~stale; m != 0; m &= m - 1) {
+        const float f = bound.blockFar[std::countr_zero(m)];
+        far = f > far ? f : far;
+    }
+    // Neither bound can reject when the plane's depth at its base point (the triangle's box's
+    // corner, where it is not cut by the tile) is in front of both: a few instructions that
+    // spare most triangles drawn in front of a block their box's range. (Only a shortcut to
+    // "not rejected": never a wrong reject, wherever the base point is.)
+    const float nearer = bound.far < far ? bound.far : far;
+    if (!(nearer * p.q[0] <= 1.0f)) [[likely]]
         return false;
     float lo = 0.0f, hi = 0.0f;
     if (!depthRange(p, box, lo, hi)) return false;
     if (lo >= bound.far) return true;
     if (!(lo >= far)) return false;
-    for (std::uint64_t m = blocks & bound.stale; m != 0; m &= m - 1) {
-        const int i = std::countr_zero(m);
+    for (; stale != 0; stale &= stale - 1) {
+        const int i = std::countr_zero(stale);
         float& f = bound.blockFar[i];
         if (lo >= f) continue;
         f = std::fmin(f, blockMaxDepth(target, i));
         bound.stale &= ~(std::uint64_t{1} << i);
-        if (!(lo >= f)) return false;
+        if (!(lo >= f)) {
+            bound.skip = kRecomputeSkip;
+            return false;
+        }
     }
     return true;
 }
