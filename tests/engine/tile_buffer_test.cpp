@@ -182,6 +182,103 @@ TEST(TileBuffer, BoundKeepsWhatIsInFront) {
     }
 }
 
+/// Appends a grid of nx × ny quads (two triangles each) on the plane z = z0 + tilt·x, covering
+/// the screen rectangle [u0, u1] × [v0, v1] of the 90° camera of layers() (u, v in -1 … 1 across
+/// the frame's width and height): quads of a few pixels, none covering a 8×8 block.
+void addGrid(Mesh& m, float z0, float tilt, int nx, int ny, float u0, float u1, float v0, float v1,
+             float aspect) {
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            const float u = u0 + (u1 - u0) * static_cast<float>(i) / static_cast<float>(nx);
+            const float v = v0 + (v1 - v0) * static_cast<float>(j) / static_cast<float>(ny);
+            const float z = z0 / (1.0f - tilt * u);  // on the plane, seen at (u, v)
+            m.positions.emplace_back(u * z, v * z * aspect, z);
+        }
+    const auto at = [&](int i, int j) {
+        return base + static_cast<std::uint32_t>(j * (nx + 1) + i);
+    };
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i)
+            m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
+                                               at(i + 1, j + 1), at(i, j + 1)});
+}
+
+// Per-block bounds on a dense mesh (no triangle covers a tile, nor a block): a layer of small
+// triangles over the frame, then the same layer behind it, then again at equal depth, then a
+// patch 0.001 % in front of it. Every triangle part of the layer behind is rejected (the tile bound
+// alone rejects none), blocks cut by the frame's edge included; the patch is drawn; the image is
+// the one drawn without hierarchical depth, in the tile buffer and in the frame, at 1 and 2
+// threads.
+TEST(TileBuffer, BlockBoundsRejectSmallTrianglesBehind) {
+    const int w = 333, h = 197;  // tiles and blocks cut by the frame's edges
+    const float aspect = static_cast<float>(h) / static_cast<float>(w);
+    const int nx = w / 4, ny = h / 4;
+    Mesh m;
+    addGrid(m, 2.0f, 0.0f, nx, ny, -1.05f, 1.05f, -1.05f, 1.05f, aspect);
+    addGrid(m, 3.0f, 0.0f, nx, ny, -1.05f, 1.05f, -1.05f, 1.05f, aspect);
+    addGrid(m, 2.0f, 0.0f, nx, ny, -1.05f, 1.05f, -1.05f, 1.05f, aspect);
+    addGrid(m, 2.0f * (1.0f - 1e-5f), 0.0f, 8, 8, -0.3f, 0.2f, -0.4f, 0.1f, aspect);
+    const std::size_t behind = 2u * static_cast<std::size_t>(nx * ny);
+    const Scene scene =
+        sceneOf(colouredByPosition(std::move(m)), lookAt({0, 0, 0}, {0, 0, 1}, 0.5 * w, w, h));
+    for (ShaderKind shader : {ShaderKind::Painter, ShaderKind::Depth})
+        for (bool tileBuffer : {true, false})
+            for (int threads : {1, 2}) {
+                RenderSettings settings;
+                settings.shader = shader;
+                settings.threads = threads;
+                const Drawn on = render(scene, settings, tileBuffer, true);
+                const Drawn off = render(scene, settings, false, false);
+                EXPECT_EQ(differences(on.frame, off.frame), 0u)
+                    << "buffer " << tileBuffer << ", " << threads << " threads";
+                // The layer behind, whole (at equal depth, the margins keep the triangles).
+                EXPECT_GE(on.stats.hiZTriangles, behind)
+                    << "buffer " << tileBuffer << ", " << threads << " threads";
+                EXPECT_LT(on.stats.fragments, off.stats.fragments);
+            }
+}
+
+// What per-block bounds must not reject: a tilted layer of small triangles, then in every block
+// of a region a flat triangle at the layer's depth at the block's centre (in front of the
+// block's far part, behind its near part: rejected if a block's bound were its nearest depth),
+// and flat triangles 0.001 % in front of a flat layer's depth.
+TEST(TileBuffer, BlockBoundsKeepWhatIsInFront) {
+    const int w = 256, h = 136;
+    const float aspect = static_cast<float>(h) / static_cast<float>(w);
+    for (const float tilt : {0.0f, 0.3f}) {
+        Mesh m;
+        addGrid(m, 4.0f, tilt, w / 3, h / 3, -1.05f, 1.05f, -1.05f, 1.05f, aspect);
+        const float nearer = tilt == 0.0f ? 1.0f - 1e-5f : 1.0f;
+        for (int by = 2; by < 12; ++by)
+            for (int bx = 2; bx < 28; ++bx) {
+                // The block's centre pixel, in the camera's screen coordinates (−1 … 1).
+                const float u = (8.0f * static_cast<float>(bx) + 4.0f) / (0.5f * w) - 1.0f;
+                const float v = (8.0f * static_cast<float>(by) + 4.0f) / (0.5f * h) - 1.0f;
+                const float z = 4.0f / (1.0f - tilt * u) * nearer;
+                const float du = 3.0f / (0.5f * w), dv = 3.0f / (0.5f * h);
+                const auto b = static_cast<std::uint32_t>(m.positions.size());
+                m.positions.insert(m.positions.end(), {{(u - du) * z, (v - dv) * z * aspect, z},
+                                                       {(u - du) * z, (v + dv) * z * aspect, z},
+                                                       {(u + du) * z, v * z * aspect, z}});
+                m.indices.insert(m.indices.end(), {b, b + 1, b + 2});
+            }
+        const Scene scene =
+            sceneOf(colouredByPosition(std::move(m)), lookAt({0, 0, 0}, {0, 0, 1}, 0.5 * w, w, h));
+        for (ShaderKind shader : {ShaderKind::Painter, ShaderKind::Depth})
+            for (int threads : {1, 2}) {
+                RenderSettings settings;
+                settings.shader = shader;
+                settings.threads = threads;
+                const Drawn on = render(scene, settings, true, true);
+                const Drawn off = render(scene, settings, false, false);
+                EXPECT_EQ(differences(on.frame, off.frame), 0u)
+                    << "tilt " << tilt << ", " << threads << " threads";
+                EXPECT_EQ(on.stats.fragments, off.stats.fragments) << "tilt " << tilt;
+            }
+    }
+}
+
 // The default choice (the buffer only on a frame larger than the caches whose boxes cover it
 // twice or more): 8 full-screen layers at 1920×1080 reside, the same layers at 333×197 and a
 // torus knot framed in part of the frame are drawn in the frame after a clear; all give the

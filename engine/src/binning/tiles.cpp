@@ -282,7 +282,9 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
     height_ = height;
     tilesX_ = tilesX;
     const bool hiZ = frame.fb != nullptr && frame.hiZ && gHiZ.load(std::memory_order_relaxed);
-    if (hiZ) depths_.assign(static_cast<std::size_t>(tiles), TileDepth{});
+    // Without a clear, the frame's depths are unknown: every block stale, so that the first
+    // test a block's bound would fail reads them.
+    if (hiZ) depths_.assign(static_cast<std::size_t>(tiles), TileDepth{!frame.clear});
     if (mayReside && buffers_.size() < n) buffers_.resize(n);
     // Several threads: two sets of n slices, the batch being binned and the batch being
     // rasterized (see below). One thread draws the previous batch's tiles before it bins the

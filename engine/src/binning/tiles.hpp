@@ -27,6 +27,7 @@ namespace facet::detail {
 /// Side of a tile in pixels: a 64×64 tile's colour and depth (32 KiB) stay in L1/L2 while its
 /// triangles are drawn.
 inline constexpr int kTileSize = 64;
+static_assert(kTileSize == kDepthBlock * kDepthBlocksPerSide, "hierarchical depth's blocks");
 
 /// Worker threads for a draw: `requested` when positive, else every core.
 int resolveThreads(int requested);

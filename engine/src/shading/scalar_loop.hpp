@@ -185,8 +185,9 @@ inline std::size_t rasterizeTriangle(const RasterContext& ctx, const CoverageSet
 
 /// Variant V's rasterizer as the tile renderer takes it (TileRenderer::draw): the draw's state
 /// by value and a call per triangle that the tile loop inlines. With a depth test, a triangle
-/// part wholly behind the tile's far bound (hierarchical depth, target.bound) is rejected before
-/// its pixels are visited, and one that covers the whole tile lowers the bound.
+/// part wholly behind the tile's far bound or its blocks' (hierarchical depth, target.bound) is
+/// rejected before its pixels are visited; one that draws marks its blocks stale, and one that
+/// covers the whole tile lowers the tile's bound.
 template <class V>
 struct TriangleRaster {
     RasterContext ctx;
@@ -195,16 +196,18 @@ struct TriangleRaster {
                            const PixelTarget& target) const {
         if constexpr (depthTested(V::kShader)) {
             TileDepth* bound = target.bound;
-            if (bound && hiddenBehind(p, setup.box, bound->far)) {
+            if (!bound) return rasterizeTriangle<V>(ctx, setup, p, target);
+            const std::uint64_t blocks = blockMask(setup.box, target.tile);
+            if (hiddenBehind(p, setup.box, blocks, target, *bound)) {
                 ++bound->rejected;
                 return 0;
             }
-            // Only wide boxes may cover a tile (a partial tile narrower than kNarrowBox keeps no
-            // bound): the dense mesh's small triangles end in a tail call, as without the bound.
-            if (setup.box.x1 - setup.box.x0 < kNarrowBox || !bound)
-                return rasterizeTriangle<V>(ctx, setup, p, target);
             const std::size_t covered = rasterizeTriangle<V>(ctx, setup, p, target);
-            lowerBound(setup, p, target.tile, *bound);
+            if (covered != 0) bound->stale |= blocks;
+            // Only wide boxes may cover a tile (a partial tile narrower than kNarrowBox keeps no
+            // tile bound, only its blocks').
+            if (setup.box.x1 - setup.box.x0 >= kNarrowBox)
+                lowerBound(setup, p, target.tile, *bound);
             return covered;
         } else {
             return rasterizeTriangle<V>(ctx, setup, p, target);
