@@ -96,22 +96,27 @@ HWY_NOINLINE inline VecF phongIntensityCarefulLanes(const Vec3Lanes& p, const Ve
 }
 
 /// phongTerms().intensity and shade() lane by lane, before the clamp (for packColorLanes()), `n`
-/// the interpolated normal. The lengths take rsqrtNormalLanes() alone, and each is only
-/// compared with 2^−126: where any of the vector's lengths is not a normal float (zero,
-/// subnormal, not a number: rare), the whole intensity is computed again the careful way. Both
-/// ways give fastRsqrt()'s value on normal lengths, so the pixels are the scalar loop's either
-/// way, for two compares, a blend and a branch fewer per length.
+/// the interpolated normal. The lengths take rsqrtNormalLanes() alone, each only compared with
+/// 2^−126: where any of the vector's lengths is below (zero or subnormal: rare), the whole
+/// intensity is computed again the careful way. A length that is not a number gets NaN on the
+/// fast way instead of inverseLengthLanes()' 0, and the same bytes: its vector has a NaN
+/// component either way (p NaN makes l NaN, light.w · p included), every use of l, v and h is a
+/// dot product with n or a sum that it reaches, so n·l is NaN on the same lanes either way (an
+/// unlit lane, ambient alone), and where only n·h is, the intensity is NaN either way, which
+/// packColorLanes() turns to 0 whatever its bits. (The multisampled loop's dead lanes have NaN
+/// positions: flagged, they took the careful way every time.) So the lanes' pixels are the
+/// scalar loop's, for two compares, a blend and a branch fewer per length.
 HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
                                 const DrawConstants& k) {
     const Df d;
     const VecF minNormal = hn::Set(d, kRsqrtMinNormal);
-    MaskF normal = hn::FirstN(d, kLanes);
+    MaskF tiny = hn::FirstN(d, 0);
     VecF intensity = phongIntensityLanes(p, n, k, [&](const Vec3Lanes& v) HWY_ATTR {
         const VecF length2 = dotLanes(v, v);
-        normal = hn::And(normal, length2 >= minNormal);  // false for NaN too
+        tiny = hn::Or(tiny, length2 < minNormal);  // zero too, not NaN
         return rsqrtNormalLanes(length2);
     });
-    if (HWY_UNLIKELY(!hn::AllTrue(d, normal))) intensity = phongIntensityCarefulLanes(p, n, k);
+    if (HWY_UNLIKELY(!hn::AllFalse(d, tiny))) intensity = phongIntensityCarefulLanes(p, n, k);
     // shade()'s clamp is left to packColorLanes(), whose toByteLanes() clamps the same way (NaN
     // to 0 either way): the same bytes for four lane operations fewer per channel.
     return {rgb.x * intensity, rgb.y * intensity, rgb.z * intensity};
