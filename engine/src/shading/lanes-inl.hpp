@@ -75,26 +75,30 @@ HWY_INLINE VecF dotLanes(const Vec3Lanes& a, const Vec3Lanes& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;  // glm::dot's order: (x + y) + z
 }
 
+/// fastRsqrt()'s bit guess and two Newton steps lane by lane, right for the lanes whose x is a
+/// normal float (x ≥ 2^−126 and finite); the others are left unspecified, for the caller to
+/// find (rsqrtLanes() scales subnormal lanes first; lightLanes() tests all its lengths at once).
+HWY_INLINE VecF rsqrtNormalLanes(VecF x) {
+    const Df d;
+    const VecF threeHalves = hn::Set(d, 1.5f);
+    const VecF half = hn::Set(d, 0.5f) * x;
+    VecF y = hn::BitCast(d, hn::Set(Di(), kRsqrtGuess) - hn::ShiftRight<1>(hn::BitCast(Di(), x)));
+    y = y * (threeHalves - half * y * y);
+    return y * (threeHalves - half * y * y);
+}
+
 /// fastRsqrt() lane by lane for the lanes where x > 0 (the others are left unspecified, for
 /// inverseLengthLanes() to zero): the same integer guess and Newton steps in the same order, so
 /// the same float on every target (not hn::ApproximateReciprocalSqrt, whose guess differs between
 /// targets: 12 bits with SSE4 and AVX2, 14 with AVX-512).
 HWY_INLINE VecF rsqrtLanes(VecF x) {
     const Df d;
-    const Di di;
     // Zero lanes are not scaled: inverseLengthLanes() sets them to 0 whatever they hold.
     const MaskF tiny = hn::And(x<hn::Set(d, kRsqrtMinNormal), x> hn::Zero(d));
-    const VecF threeHalves = hn::Set(d, 1.5f);
-    const auto newton = [&](VecF xs) HWY_ATTR {
-        const VecF half = hn::Set(d, 0.5f) * xs;
-        VecF y = hn::BitCast(d, hn::Set(di, kRsqrtGuess) - hn::ShiftRight<1>(hn::BitCast(di, xs)));
-        y = y * (threeHalves - half * y * y);
-        return y * (threeHalves - half * y * y);
-    };
     // Subnormal lengths are rare: one test for the whole vector instead of two blends per
     // call; the lanes' values are the same either way.
-    if (HWY_LIKELY(hn::AllFalse(d, tiny))) return newton(x);
-    const VecF y = newton(hn::IfThenElse(tiny, x * hn::Set(d, kRsqrtScaleUp), x));
+    if (HWY_LIKELY(hn::AllFalse(d, tiny))) return rsqrtNormalLanes(x);
+    const VecF y = rsqrtNormalLanes(hn::IfThenElse(tiny, x * hn::Set(d, kRsqrtScaleUp), x));
     return hn::IfThenElse(tiny, y * hn::Set(d, kRsqrtScaleBack), y);
 }
 

@@ -52,37 +52,71 @@ HWY_INLINE VecF evalLanes(const float (&p)[3], VecF dx, float dy) {
     return evalLanes(p, dx, hn::Set(Df(), dy));
 }
 
-/// phongTerms().intensity and shade() lane by lane, before the clamp (for packColorLanes()), `n`
-/// the interpolated normal: the same operations in the same order, the lengths by rsqrtLanes() and
-/// the specular power by unitPowLanes(), as the scalar loop's fastRsqrt() and unitPow().
-HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
-                                const DrawConstants& k) {
+/// phongTerms().intensity lane by lane, `n` the interpolated normal: the same operations in the
+/// same order, the specular power by unitPowLanes() as the scalar loop's unitPow(), and each
+/// inverse length (the scalar inverseLength()) by `inverseLength`, given a vector.
+template <class InverseLength>
+HWY_INLINE VecF phongIntensityLanes(const Vec3Lanes& p, const Vec3Lanes& n, const DrawConstants& k,
+                                    InverseLength inverseLength) {
     const Df d;
     const FastLighting& f = k.lighting;
     auto all = [&](float v) HWY_ATTR { return hn::Set(d, v); };
     const VecF lw = all(f.light.w);
     const Vec3Lanes toLight{all(f.light.x) - lw * p.x, all(f.light.y) - lw * p.y,
                             all(f.light.z) - lw * p.z};
-    const Vec3Lanes l = scaleLanes(toLight, inverseLengthLanes(toLight));
+    const Vec3Lanes l = scaleLanes(toLight, inverseLength(toLight));
     const VecF nDotL = dotLanes(n, l);
     VecF intensity = all(f.ambientTerm);
     // Where no lane faces the light (n·l ≤ 0, or not a number), I is the ambient term alone
     // whatever the specular: |n|, the halfway vector and the power are skipped for the whole
     // vector. n·l·(1/|n|) > 0 needs n·l > 0, 1/|n| being 0 or positive.
     if (!hn::AllFalse(d, nDotL > hn::Zero(d))) {
-        const VecF rn = inverseLengthLanes(n);
+        const VecF rn = inverseLength(n);
         const VecF nl = nDotL * rn;
         const MaskF lit = nl > hn::Zero(d);
         const Vec3Lanes toEye{all(k.eye.x) - p.x, all(k.eye.y) - p.y, all(k.eye.z) - p.z};
-        const Vec3Lanes v = scaleLanes(toEye, inverseLengthLanes(toEye));
+        const Vec3Lanes v = scaleLanes(toEye, inverseLength(toEye));
         const Vec3Lanes halfway{l.x + v.x, l.y + v.y, l.z + v.z};
-        const VecF rh = inverseLengthLanes(halfway);
+        const VecF rh = inverseLength(halfway);
         // std::clamp(nh, 0, 1): the same for NaN too
         const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
         const VecF specular = unitPowLanes(nh, f.shininess);
         const VecF diffuseAndSpecular = all(f.diffuse) * nl + all(f.specular) * specular;
         intensity = intensity + hn::IfThenElseZero(lit, diffuseAndSpecular);
     }
+    return intensity;
+}
+
+/// phongIntensityLanes() with inverseLengthLanes(), which handles every length (zero, subnormal,
+/// not a number) lane by lane: lightLanes()' rare slow path, out of line.
+HWY_NOINLINE inline VecF phongIntensityCarefulLanes(const Vec3Lanes& p, const Vec3Lanes& n,
+                                                    const DrawConstants& k) {
+    return phongIntensityLanes(p, n, k,
+                               [](const Vec3Lanes& v) HWY_ATTR { return inverseLengthLanes(v); });
+}
+
+/// phongTerms().intensity and shade() lane by lane, before the clamp (for packColorLanes()), `n`
+/// the interpolated normal. The lengths take rsqrtNormalLanes() alone, each only compared with
+/// 2^−126: where any of the vector's lengths is below (zero or subnormal: rare), the whole
+/// intensity is computed again the careful way. A length that is not a number gets NaN on the
+/// fast way instead of inverseLengthLanes()' 0, and the same bytes: its vector has a NaN
+/// component either way (p NaN makes l NaN, light.w · p included), every use of l, v and h is a
+/// dot product with n or a sum that it reaches, so n·l is NaN on the same lanes either way (an
+/// unlit lane, ambient alone), and where only n·h is, the intensity is NaN either way, which
+/// packColorLanes() turns to 0 whatever its bits. (The multisampled loop's dead lanes have NaN
+/// positions: flagged, they took the careful way every time.) So the lanes' pixels are the
+/// scalar loop's, for two compares, a blend and a branch fewer per length.
+HWY_INLINE Vec3Lanes lightLanes(const Vec3Lanes& rgb, const Vec3Lanes& p, const Vec3Lanes& n,
+                                const DrawConstants& k) {
+    const Df d;
+    const VecF minNormal = hn::Set(d, kRsqrtMinNormal);
+    MaskF tiny = hn::FirstN(d, 0);
+    VecF intensity = phongIntensityLanes(p, n, k, [&](const Vec3Lanes& v) HWY_ATTR {
+        const VecF length2 = dotLanes(v, v);
+        tiny = hn::Or(tiny, length2 < minNormal);  // zero too, not NaN
+        return rsqrtNormalLanes(length2);
+    });
+    if (HWY_UNLIKELY(!hn::AllFalse(d, tiny))) intensity = phongIntensityCarefulLanes(p, n, k);
     // shade()'s clamp is left to packColorLanes(), whose toByteLanes() clamps the same way (NaN
     // to 0 either way): the same bytes for four lane operations fewer per channel.
     return {rgb.x * intensity, rgb.y * intensity, rgb.z * intensity};

@@ -1,0 +1,119 @@
+// Phong's lane functions against the scalar ones they copy, bit for bit, on every SIMD target this
+// CPU has: unitPowLanes() against unitPow() and rsqrtLanes() against fastRsqrt(), over dense
+// grids of inputs (the images in simd_targets_test only reach the values a scene produces).
+// Compiled once per target, like the engine's loops (hwy/foreach_target.h re-includes this file).
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "engine/lighting_lanes_test.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+
+#include <hwy/highway.h>
+
+#include "shading/lanes-inl.hpp"
+#include "shading/unit_pow-inl.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::detail::HWY_NAMESPACE {
+
+/// unitPowLanes() over x[0 … count) (count a multiple of 16) into out.
+void unitPowAll(const float* x, std::size_t count, float s, float* out) {
+    const Df d;
+    for (std::size_t i = 0; i < count; i += kLanes)
+        hn::StoreU(unitPowLanes(hn::LoadU(d, x + i), s), d, out + i);
+}
+
+/// rsqrtLanes() over x[0 … count), x > 0 (count a multiple of 16), into out.
+void rsqrtAll(const float* x, std::size_t count, float* out) {
+    const Df d;
+    for (std::size_t i = 0; i < count; i += kLanes)
+        hn::StoreU(rsqrtLanes(hn::LoadU(d, x + i)), d, out + i);
+}
+
+}  // namespace facet::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "shading/fast_lighting.hpp"
+#include "shading/unit_pow.hpp"
+
+namespace facet::detail {
+
+HWY_EXPORT(unitPowAll);
+HWY_EXPORT(rsqrtAll);
+
+namespace {
+
+/// The inputs padded with ones to a multiple of 16 lanes.
+void pad(std::vector<float>& x) {
+    while (x.size() % 16 != 0) x.push_back(1.0f);
+}
+
+/// Each target this CPU has, forced in turn, runs `body`.
+template <class Body>
+void onEveryTarget(Body body) {
+    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    ASSERT_FALSE(targets.empty());
+    for (const std::int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        body(hwy::TargetName(target));
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+std::uint32_t bitsOf(float v) {
+    return std::bit_cast<std::uint32_t>(v);
+}
+
+// x over [0, 1] on a 2^-20 grid, every float in (0.98, 1], subnormals, zero, NaN and values
+// outside [0, 1]; the exponents of unit_pow_test, zero and infinity.
+TEST(LightingLanes, UnitPowLanesIsUnitPowOnEveryTarget) {
+    std::vector<float> x;
+    for (int i = 0; i <= 1 << 20; ++i) x.push_back(static_cast<float>(i) / (1 << 20));
+    for (float v = 1.0f; v > 0.98f; v = std::nextafter(v, 0.0f)) x.push_back(v);
+    for (std::uint32_t bits = 1; bits < 0x00800000u; bits += 4099)
+        x.push_back(std::bit_cast<float>(bits));
+    x.insert(x.end(), {0.0f, -0.0f, 1e-30f, 1.17549435e-38f, std::nanf(""), -0.5f, 1.5f});
+    pad(x);
+    const float inf = std::numeric_limits<float>::infinity();
+    std::vector<float> out(x.size());
+    onEveryTarget([&](const char* name) {
+        for (const float s : {0.0f, 0.5f, 1.0f, 3.7f, 20.0f, 30.0f, 128.0f, 1000.0f, inf}) {
+            HWY_DYNAMIC_DISPATCH(unitPowAll)(x.data(), x.size(), s, out.data());
+            std::size_t differ = 0;
+            for (std::size_t i = 0; i < x.size(); ++i)
+                if (bitsOf(out[i]) != bitsOf(unitPow(x[i], s)) &&
+                    !(std::isnan(out[i]) && std::isnan(unitPow(x[i], s))))
+                    ++differ;
+            EXPECT_EQ(differ, 0u) << name << ", s = " << s;
+        }
+    });
+}
+
+// Every 97th positive float, subnormals included, and every float in [1, 4).
+TEST(LightingLanes, RsqrtLanesIsFastRsqrtOnEveryTarget) {
+    std::vector<float> x;
+    for (std::uint32_t bits = 1; bits < 0x7F800000u; bits += 97)
+        x.push_back(std::bit_cast<float>(bits));
+    for (float v = 1.0f; v < 4.0f; v = std::nextafter(v, 4.0f)) x.push_back(v);
+    pad(x);
+    std::vector<float> out(x.size());
+    onEveryTarget([&](const char* name) {
+        HWY_DYNAMIC_DISPATCH(rsqrtAll)(x.data(), x.size(), out.data());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            if (bitsOf(out[i]) != bitsOf(fastRsqrt(x[i]))) ++differ;
+        EXPECT_EQ(differ, 0u) << name;
+    });
+}
+
+}  // namespace
+}  // namespace facet::detail
+#endif  // HWY_ONCE
