@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
@@ -385,6 +386,41 @@ bool randomSmallTriangle(std::mt19937& rng, detail::CoverageSetup& out) {
     const detail::PixelRect tile{cut(rng) / 2, cut(rng) / 2, 24 + cut(rng) / 2, 24 + cut(rng) / 2};
     out = detail::restrictSetup(out, tile);
     return !out.box.empty() && detail::fitsBlockLoop(out);
+}
+
+// fitsBlockLoop()'s promise, on values around its short test's limits (2^23 and a box of 254
+// columns plus rows, padded): every edge value the block loop forms over the padded box fits in
+// 32 bits. A short test too generous (2^24, say) fails here.
+TEST(BlockLoop, FitsOnlyWhereEveryLaneValueFitsIn32Bits) {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<std::int64_t> near(-(std::int64_t{1} << 24),
+                                                     std::int64_t{1} << 24);
+    std::uniform_int_distribution<int> side(0, 250);
+    int accepted = 0;
+    for (int n = 0; n < 20000; ++n) {
+        detail::CoverageSetup s{};
+        const int scale = n % 4;  // values up to 2^24 >> scale
+        for (int i = 0; i < 3; ++i) {
+            s.e0[i] = near(rng) >> scale;
+            s.stepX[i] = near(rng) >> scale;
+            s.stepY[i] = near(rng) >> scale;
+        }
+        const int w = side(rng);
+        s.box = {0, 0, w, std::max(0, 246 - w - side(rng) % 3)};
+        if (!detail::fitsBlockLoop(s)) continue;
+        ++accepted;
+        const std::int64_t columns = s.box.x1 - s.box.x0 + detail::kMaxBlockSide;
+        const std::int64_t rows = s.box.y1 - s.box.y0 + detail::kMaxBlockSide;
+        for (int i = 0; i < 3; ++i)
+            for (const std::int64_t x : {std::int64_t{0}, columns})
+                for (const std::int64_t y :
+                     {std::int64_t{0}, rows}) {  // a plane: extremes at corners
+                    const std::int64_t v = s.e0[i] + x * s.stepX[i] + y * s.stepY[i];
+                    ASSERT_LE(v, std::numeric_limits<std::int32_t>::max()) << n;
+                    ASSERT_GE(v, std::numeric_limits<std::int32_t>::min()) << n;
+                }
+    }
+    EXPECT_GT(accepted, 1000);
 }
 
 TEST(BlockLoop, CoversExactlyTheScalarPixelsOnEveryTarget) {

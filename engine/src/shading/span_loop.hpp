@@ -38,7 +38,20 @@ inline constexpr int kMaxBlockSide = 4;
 /// operations, where the exact maximum per edge cost 70 instructions per triangle. Small
 /// triangles pass by orders of magnitude; big ones clipped to a small box may not (then: scalar
 /// loop, which gives the same pixels).
+///
+/// A dense mesh's small triangle passes a shorter test first: every value in [−2^23, 2^23)
+/// (one add per value, their OR below 2^24) and a box of at most 254 columns plus rows. That
+/// implies the bound below (each OR'ed magnitude + 1 is then at most 2^23, and 2^23 · 255 <
+/// 2^31), so the same triangles take the block loop, for about half the instructions.
 [[gnu::always_inline]] inline bool fitsBlockLoop(const CoverageSetup& s) {
+    constexpr std::uint64_t kSmall = std::uint64_t{1} << 23;
+    const auto shifted = [&](std::int64_t v) { return static_cast<std::uint64_t>(v) + kSmall; };
+    const std::uint64_t all = shifted(s.e0[0]) | shifted(s.e0[1]) | shifted(s.e0[2]) |
+                              shifted(s.stepX[0]) | shifted(s.stepX[1]) | shifted(s.stepX[2]) |
+                              shifted(s.stepY[0]) | shifted(s.stepY[1]) | shifted(s.stepY[2]);
+    const int extent = s.box.x1 - s.box.x0 + s.box.y1 - s.box.y0 + 2 * kMaxBlockSide;
+    static_assert(kSmall * 255 <= std::numeric_limits<std::int32_t>::max());
+    if (all < 2 * kSmall && extent <= 254) return true;
     // |v| − 1 for v < 0, |v| otherwise: one's complement, no branch, no overflow at INT64_MIN.
     const auto magnitude = [](std::int64_t v) { return v ^ (v >> 63); };
     const auto largest = [&](const std::int64_t(&v)[3]) {
