@@ -44,16 +44,18 @@ struct Drawn {
 };
 
 /// `scene` rendered with the tile buffer always or never used (whatever the draw's overdraw),
-/// and hierarchical depth on or off.
+/// and hierarchical depth (tile and block bounds) on or off.
 Drawn render(const Scene& scene, const RenderSettings& settings, bool tileBuffer, bool hiZ) {
     detail::useTileBuffer(tileBuffer ? detail::TileBufferUse::Always
                                      : detail::TileBufferUse::Never);
     detail::enableHiZ(hiZ);
+    detail::enableBlockHiZ(hiZ);
     Renderer renderer;
     Drawn d;
     d.stats = renderer.render(scene, settings, d.frame).value();
     detail::useTileBuffer(detail::TileBufferUse::Overdrawn);
     detail::enableHiZ(true);
+    detail::enableBlockHiZ(false);
     return d;
 }
 

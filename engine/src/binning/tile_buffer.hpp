@@ -37,9 +37,12 @@ struct TileDepth {
     int skip = 0;  ///< tests left that pass over stale blocks' recomputes (kRecomputeSkip)
     std::size_t rejected = 0;
     float blockFar[kDepthBlocksPerSide * kDepthBlocksPerSide];
+    bool blocks = false;  ///< the blocks' bounds are kept and tested (enableBlockHiZ())
 
-    /// Nothing known; every block stale when `drawnBefore` (the frame was not cleared).
-    explicit TileDepth(bool drawnBefore = false) : stale(drawnBefore ? ~std::uint64_t{0} : 0) {
+    /// Nothing known; every block stale when `drawnBefore` (the frame was not cleared); the
+    /// blocks' bounds kept when `withBlocks`.
+    explicit TileDepth(bool drawnBefore = false, bool withBlocks = false)
+        : stale(drawnBefore ? ~std::uint64_t{0} : 0), blocks(withBlocks) {
         for (float& f : blockFar) f = kEmptyDepth;
     }
 };
@@ -180,9 +183,10 @@ inline constexpr int kBlockTestBox = 16;
 /// far bound, or of the far bound of every block the box overlaps (`blocks`, blockMask()). The
 /// blocks' bounds known exactly come first (one in front decides: no reject); then a stale bound
 /// that would fail is recomputed from the stored depths. A few compares when nothing is known.
+/// `blocks` 0: the tile's bound alone (the blocks' bounds are not kept).
 inline bool hiddenBehind(const Planes& p, const PixelRect& box, std::uint64_t blocks,
                          const PixelTarget& target, TileDepth& bound) {
-    if (box.x1 - box.x0 >= kBlockTestBox || box.y1 - box.y0 >= kBlockTestBox) {
+    if (blocks == 0 || box.x1 - box.x0 >= kBlockTestBox || box.y1 - box.y0 >= kBlockTestBox) {
         if (!(bound.far < kEmptyDepth)) [[likely]]
             return false;
         float lo = 0.0f, hi = 0.0f;

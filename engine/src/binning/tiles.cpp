@@ -169,6 +169,7 @@ using Clock = std::chrono::steady_clock;
 
 std::atomic<TileBufferUse> gTileBuffer{TileBufferUse::Overdrawn};
 std::atomic<bool> gHiZ{true};
+std::atomic<bool> gBlockHiZ{false};
 
 /// Frames of more bytes (colour and depth) than this are written back with streaming stores.
 /// A plain copy reads each line of the frame into the cache before overwriting it; on a frame
@@ -237,6 +238,10 @@ void enableHiZ(bool enabled) {
     gHiZ.store(enabled, std::memory_order_relaxed);
 }
 
+void enableBlockHiZ(bool enabled) {
+    gBlockHiZ.store(enabled, std::memory_order_relaxed);
+}
+
 int resolveThreads(int requested) {
     if (requested > 0) return requested;
     return std::max(1, omp_get_num_procs());
@@ -284,7 +289,9 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
     const bool hiZ = frame.fb != nullptr && frame.hiZ && gHiZ.load(std::memory_order_relaxed);
     // Without a clear, the frame's depths are unknown: every block stale, so that the first
     // test a block's bound would fail reads them.
-    if (hiZ) depths_.assign(static_cast<std::size_t>(tiles), TileDepth{!frame.clear});
+    if (hiZ)
+        depths_.assign(static_cast<std::size_t>(tiles),
+                       TileDepth{!frame.clear, gBlockHiZ.load(std::memory_order_relaxed)});
     if (mayReside && buffers_.size() < n) buffers_.resize(n);
     // Several threads: two sets of n slices, the batch being binned and the batch being
     // rasterized (see below). One thread draws the previous batch's tiles before it bins the

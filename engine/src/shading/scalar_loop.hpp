@@ -197,7 +197,7 @@ struct TriangleRaster {
         if constexpr (depthTested(V::kShader)) {
             TileDepth* bound = target.bound;
             if (!bound) return rasterizeTriangle<V>(ctx, setup, p, target);
-            const std::uint64_t blocks = blockMask(setup.box, target.tile);
+            const std::uint64_t blocks = bound->blocks ? blockMask(setup.box, target.tile) : 0;
             if (hiddenBehind(p, setup.box, blocks, target, *bound)) {
                 ++bound->rejected;
                 return 0;
