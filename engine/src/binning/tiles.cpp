@@ -322,13 +322,12 @@ void TileRenderer::run(const DrawJob& job, int threads, RenderStats& stats, Tile
     binned.lanes = laneSetup();  // the SIMD target, chosen once per draw
 
     // Thread i's share of the frame: tiles [tileShareBegin(i), tileShareBegin(i + 1)), rows of
-    // tiles from the top, as the in-draw clear below splits the frame's pixels.
+    // tiles from the top, as the in-draw clear below splits the frame's pixels. The shares of
+    // step k are set during step k − 1 (below), so none is set here.
     const auto tileShareBegin = [&](std::size_t i) {
         return static_cast<int>(static_cast<std::size_t>(tiles) * i / n);
     };
     if (shares_.size() < 2 * n) shares_ = std::vector<TileShare>(2 * n);
-    for (std::size_t i = 0; i < 2 * n; ++i)
-        shares_[i].next.store(tileShareBegin(i % n), std::memory_order_relaxed);
     double clearMs = 0;  // the in-draw clear pass when the batch does not reside
 #pragma omp parallel num_threads(slices)
     {
