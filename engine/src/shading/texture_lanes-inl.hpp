@@ -162,10 +162,11 @@ HWY_INLINE VecI bilinearPackedLanes(const MipLevel& level, VecF u, VecF v) {
     // a)·f with f ∈ [0, 1) lies between a and b), so c ∈ [0, 255] and c · fl(1/255) ∈ [0, 1]
     // (rounding is monotone and 255 · fl(1/255) rounds to exactly 1): the clamp changes nothing.
     const VecF k = hn::Set(d, 1.0f / 255.0f), s = hn::Set(d, 255.0f), half = hn::Set(d, 0.5f);
-    VecI bytes[3];
-    for (int c = 0; c < 3; ++c) bytes[c] = truncInRangeLanes(rgb[c] * k * s + half);
+    const VecI r = truncInRangeLanes(rgb[0] * k * s + half);
+    const VecI g = truncInRangeLanes(rgb[1] * k * s + half);
+    const VecI b = truncInRangeLanes(rgb[2] * k * s + half);
     const VecI opaque = hn::Set(di, static_cast<std::int32_t>(0xFF000000u));
-    return bytes[0] | hn::ShiftLeft<8>(bytes[1]) | hn::ShiftLeft<16>(bytes[2]) | opaque;
+    return r | hn::ShiftLeft<8>(g) | hn::ShiftLeft<16>(b) | opaque;
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE
