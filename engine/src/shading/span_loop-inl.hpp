@@ -159,10 +159,11 @@ HWY_INLINE VecI vectorColorLanes(const VecF* a, const DrawConstants& k) {
 /// How many live lanes make shading all lanes at once pay off: any for a plain colour or Phong
 /// lighting (a vector of Phong lanes costs fewer instructions than one scalar pixel, whose
 /// phongTerms() is one long chain of dependent scalar operations, plus the lane's varyings
-/// stored and reloaded to reach it); half for texture lookups, whose lanes are dear: below that
+/// stored and reloaded to reach it); a quarter for texture lookups, whose lanes are dearer (a
+/// vector of bilinear texels costs about as many instructions as two scalar ones): below that
 /// the scalar code shades the live lanes cheaper.
 template <class V>
-inline constexpr int kMinVectorLanes = !kVectorColor<V> ? (kLanes + 1) / 2 : 1;
+inline constexpr int kMinVectorLanes = !kVectorColor<V> ? (kLanes + 3) / 4 : 1;
 
 /// fragmentWeights() lane by lane for an affine or perspective variant: the weights (m1, m2) of
 /// vertices 1 and 2 at the lanes' pixels, `depth` = 1/q there.
