@@ -87,8 +87,7 @@ HWY_INLINE VecF phongIntensityLanes(const Vec3Lanes& p, const Vec3Lanes& n, cons
         // diffuse, the same float). A lane whose n·h is not a number fails n·h ≤ maxNh and keeps
         // the power (its NaN).
         const SpecularSkip& skip = k.specularSkip;
-        const MaskF negligible =
-            hn::And(nh <= all(skip.maxNh), diffuse >= all(skip.minDiffuse));
+        const MaskF negligible = hn::And(nh <= all(skip.maxNh), diffuse >= all(skip.minDiffuse));
         if (!hn::AllFalse(d, hn::AndNot(negligible, lit))) {
             const VecF specular = unitPowLanes(nh, f.shininess);
             diffuseAndSpecular = diffuse + all(f.specular) * specular;

@@ -85,8 +85,7 @@ struct SpecularSkip {
 inline SpecularSkip specularSkip(float diffuse, float specular, float s) {
     SpecularSkip skip;
     const bool finite = std::isfinite(diffuse) && std::isfinite(specular) && std::isfinite(s);
-    if (!finite || !(diffuse > 0.0f) || !(specular > 0.0f) || !(s > 0.0f) || s > 1e4f)
-        return skip;
+    if (!finite || !(diffuse > 0.0f) || !(specular > 0.0f) || !(s > 0.0f) || s > 1e4f) return skip;
     const float minDiffuse = diffuse / 16.0f;  // exact unless it underflows: then nothing skips
     if (!(minDiffuse >= 0x1p-90f)) return skip;
     const double slack = 0.01 + static_cast<double>(s) / 1024.0;
