@@ -115,6 +115,49 @@ TEST(LightingLanes, RsqrtLanesIsFastRsqrtOnEveryTarget) {
     });
 }
 
+// specularSkip()'s claim: on a lit lane with n·h ≤ maxNh and diffuse a ≥ minDiffuse, the float
+// sum a + specular·unitPow(n·h, s) is a, so the vector loops may leave the power out. Checked at
+// the smallest a allowed and at the float below the next power of two (where a float step is
+// smallest relative to a), for every float up to 2^12 steps below maxNh and a grid under it.
+TEST(LightingLanes, SpecularSkipLeavesTheSumUnchanged) {
+    std::size_t enabled = 0, nonzero = 0;
+    for (const float diffuse : {0.63f, 1.0f, 0.01f, 1e-20f})
+        for (const float specular : {0.27f, 1.0f, 100.0f, 1e-3f})
+            for (const float s : {0.25f, 1.0f, 5.0f, 30.0f, 128.0f, 1000.0f, 10000.0f}) {
+                const SpecularSkip skip = specularSkip(diffuse, specular, s);
+                if (skip.maxNh < 0.0f) continue;
+                ++enabled;
+                ASSERT_GE(skip.minDiffuse, diffuse / 16.0f);
+                const float nextPower = std::exp2(std::floor(std::log2(skip.minDiffuse)) + 1.0f);
+                const float as[] = {skip.minDiffuse, std::nextafter(nextPower, 0.0f),
+                                    skip.minDiffuse * 1.5f};
+                std::vector<float> x;
+                float v = std::min(skip.maxNh, 1.0f);
+                for (int i = 0; i < 4096 && v > 0.0f; ++i, v = std::nextafter(v, 0.0f))
+                    x.push_back(v);
+                for (int i = 0; i <= 1 << 14; ++i)
+                    x.push_back(std::min(skip.maxNh, 1.0f) * static_cast<float>(i) / (1 << 14));
+                std::size_t differ = 0;
+                for (const float a : as)
+                    for (const float nh : x) {
+                        const float b = specular * unitPow(nh, s);
+                        if (b > 0.0f) ++nonzero;
+                        if (bitsOf(a + b) != bitsOf(a)) ++differ;
+                    }
+                EXPECT_EQ(differ, 0u) << "diffuse " << diffuse << ", specular " << specular
+                                      << ", s = " << s << ", maxNh " << skip.maxNh;
+            }
+    EXPECT_GT(enabled, 50u);
+    EXPECT_GT(nonzero, 1000000u);  // the sums checked are not all a + 0
+    // Spot's lighting (Id·Kd 0.63, Id·Ks 0.27, s = 30): the power is left out below n·h ≈ 0.53.
+    EXPECT_GT(specularSkip(0.63f, 0.27f, 30.0f).maxNh, 0.4f);
+    // Nothing skipped where the bound does not hold or means nothing.
+    EXPECT_LT(specularSkip(0.0f, 0.27f, 30.0f).maxNh, 0.0f);
+    EXPECT_LT(specularSkip(0.63f, 0.0f, 30.0f).maxNh, 0.0f);
+    EXPECT_LT(specularSkip(0.63f, 0.27f, 0.0f).maxNh, 0.0f);
+    EXPECT_LT(specularSkip(0.63f, 0.27f, std::nanf("")).maxNh, 0.0f);
+}
+
 }  // namespace
 }  // namespace facet::detail
 #endif  // HWY_ONCE

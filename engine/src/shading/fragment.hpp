@@ -56,6 +56,9 @@ struct DrawConstants {
     glm::vec3 baseColor{1.0f};  ///< the colour when the layout has none (white; red for normals)
     /// baseColor packed, once per draw: the colour of every pixel of a variant without varyings.
     std::uint32_t basePacked = packColor(baseColor);
+    /// Where the vector loops' Phong lighting may leave out the specular power, once per draw.
+    SpecularSkip specularSkip =
+        detail::specularSkip(lighting.diffuse, lighting.specular, lighting.shininess);
 };
 
 struct RasterContext;

@@ -80,8 +80,18 @@ HWY_INLINE VecF phongIntensityLanes(const Vec3Lanes& p, const Vec3Lanes& n, cons
         const VecF rh = inverseLength(halfway);
         // std::clamp(nh, 0, 1): the same for NaN too
         const VecF nh = clamp01Lanes(dotLanes(n, halfway) * (rn * rh));
-        const VecF specular = unitPowLanes(nh, f.shininess);
-        const VecF diffuseAndSpecular = all(f.diffuse) * nl + all(f.specular) * specular;
+        const VecF diffuse = all(f.diffuse) * nl;
+        VecF diffuseAndSpecular = diffuse;
+        // The power is the longest chain of dependent operations here: left out where no lit
+        // lane's specular term can change I (k.specularSkip: there diffuse + specular rounds to
+        // diffuse, the same float). A lane whose n·h is not a number fails n·h ≤ maxNh and keeps
+        // the power (its NaN).
+        const SpecularSkip& skip = k.specularSkip;
+        const MaskF negligible = hn::And(nh <= all(skip.maxNh), diffuse >= all(skip.minDiffuse));
+        if (!hn::AllFalse(d, hn::AndNot(negligible, lit))) {
+            const VecF specular = unitPowLanes(nh, f.shininess);
+            diffuseAndSpecular = diffuse + all(f.specular) * specular;
+        }
         intensity = intensity + hn::IfThenElseZero(lit, diffuseAndSpecular);
     }
     return intensity;

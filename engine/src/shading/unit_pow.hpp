@@ -7,6 +7,7 @@
 // the result is above 2^-9, far below the 8-bit step (unit_pow_test measures it).
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 namespace facet::detail {
@@ -56,6 +57,46 @@ inline constexpr float kMinExponent = -125.0f;
     float q = kExp2Series[6];
     for (int k = 5; k >= 0; --k) q = q * f + kExp2Series[k];
     return q * std::bit_cast<float>((n + 127) << 23);
+}
+
+/// Where Phong's specular term cannot change a pixel's intensity (per draw, for the vector
+/// loops; specularSkip() computes it): on a lit lane whose n·h ≤ maxNh and whose diffuse term
+/// a = Id·Kd·n·l ≥ minDiffuse, b = Id·Ks·unitPow(n·h, s) rounds to at most a·2^−25, less than
+/// half a float step of a, so the float sum a + b is a itself and I the same bits without b.
+/// The defaults skip nothing (n·h is never below 0).
+struct SpecularSkip {
+    float maxNh = -1.0f;
+    float minDiffuse = 0.0f;
+};
+
+/// The SpecularSkip of a draw with Id·Kd = `diffuse`, Id·Ks = `specular` and shininess `s`;
+/// nothing skipped unless all three are positive and finite (s ≤ 10⁴).
+///
+/// Why it holds: with a ≥ A = diffuse/16 and b ≥ 0, a + b rounds to a when b ≤ A·2^−25 (half
+/// the float step above a is more than a·2^−25). b = fl(specular·P) ≤ specular·P·(1 + 2^−22)
+/// while specular·P stays normal (A ≥ 2^−90 is required for that), and P = unitPow(x, s) ≤
+/// x^s·2^(δ) for x in [0, 1]: δ bounds the error of unitPow's exponent y = s·log2 x (the log2
+/// series' truncation under 1e-9, its float roundings about 1e-7 and e + p·t's rounding under
+/// 2^−17, all times s; y's own rounding under 2^−17) and of the exp2 polynomial (relative 1e-6):
+/// δ = 0.01 + s/1024 is a hundred times that. So maxNh = (A·2^−25 / (specular·(1 + 2^−22)) ·
+/// 2^−δ)^(1/s), rounded down to a float: x ≤ maxNh gives b ≤ A·2^−25. (unitPow gives 0 below
+/// y = −125 and 1 at x = 1, both within the bound.) lighting_lanes_test checks the claim on
+/// dense grids.
+inline SpecularSkip specularSkip(float diffuse, float specular, float s) {
+    SpecularSkip skip;
+    const bool finite = std::isfinite(diffuse) && std::isfinite(specular) && std::isfinite(s);
+    if (!finite || !(diffuse > 0.0f) || !(specular > 0.0f) || !(s > 0.0f) || s > 1e4f) return skip;
+    const float minDiffuse = diffuse / 16.0f;  // exact unless it underflows: then nothing skips
+    if (!(minDiffuse >= 0x1p-90f)) return skip;
+    const double slack = 0.01 + static_cast<double>(s) / 1024.0;
+    const double log2Bound = std::log2(static_cast<double>(minDiffuse)) - 25.0 -
+                             std::log2(static_cast<double>(specular) * (1.0 + 0x1p-22));
+    const double maxNh = std::exp2((log2Bound - slack) / static_cast<double>(s));
+    float t = static_cast<float>(maxNh);
+    if (static_cast<double>(t) > maxNh) t = std::nextafter(t, 0.0f);
+    skip.maxNh = t;
+    skip.minDiffuse = minDiffuse;
+    return skip;
 }
 
 }  // namespace facet::detail
