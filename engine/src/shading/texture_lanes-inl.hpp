@@ -91,21 +91,6 @@ HWY_INLINE void gatherPairs(const std::uint32_t* texels, VecI i, VecI& first, Ve
 }
 #endif
 
-/// hn::ConvertTo(Di(), x) for lanes known to be in int range: x86's truncating conversion
-/// alone, without the fix-up Highway adds for out-of-range lanes (four more operations each).
-/// The same integers wherever the value fits.
-HWY_INLINE VecI truncInRangeLanes(VecF x) {
-#if HWY_TARGET == HWY_AVX2
-    return VecI{_mm256_cvttps_epi32(x.raw)};
-#elif HWY_TARGET == HWY_AVX3
-    return VecI{_mm512_cvttps_epi32(x.raw)};
-#elif HWY_TARGET == HWY_SSE4
-    return VecI{_mm_cvttps_epi32(x.raw)};
-#else
-    return hn::ConvertTo(Di(), x);
-#endif
-}
-
 /// sampleBilinear(tex, uv, 0) lane by lane, then packColor(): the packed RGBA8 result. The same
 /// float operations as bilinear255() where they decide a value, cheaper ones where the result is
 /// provably the same (each step says why).
@@ -123,7 +108,7 @@ HWY_INLINE VecI bilinearPackedLanes(const MipLevel& level, VecF u, VecF v) {
     // x ∈ [−½, w − ½] and y ∈ [−½, h − ½], so x0 ∈ [−1, w − 1] and y0 ∈ [−1, h − 1]: only −1
     // wraps down (to size − 1: as unsigned it is above every other index, so a min puts it there)
     // and only x0 + 1 = w wraps up (to 0).
-    const VecI x0 = truncInRangeLanes(xf), y0 = truncInRangeLanes(yf);
+    const VecI x0 = truncateInRangeLanes(xf), y0 = truncateInRangeLanes(yf);
     const VecI one = hn::Set(di, 1), vw = hn::Set(di, w), vh = hn::Set(di, h);
     const VecI y0w = hn::BitCast(di, hn::Min(hn::BitCast(du, y0), hn::Set(du, h - 1)));
     const VecI y1 = y0 + one;
@@ -162,9 +147,9 @@ HWY_INLINE VecI bilinearPackedLanes(const MipLevel& level, VecF u, VecF v) {
     // a)·f with f ∈ [0, 1) lies between a and b), so c ∈ [0, 255] and c · fl(1/255) ∈ [0, 1]
     // (rounding is monotone and 255 · fl(1/255) rounds to exactly 1): the clamp changes nothing.
     const VecF k = hn::Set(d, 1.0f / 255.0f), s = hn::Set(d, 255.0f), half = hn::Set(d, 0.5f);
-    const VecI r = truncInRangeLanes(rgb[0] * k * s + half);
-    const VecI g = truncInRangeLanes(rgb[1] * k * s + half);
-    const VecI b = truncInRangeLanes(rgb[2] * k * s + half);
+    const VecI r = truncateInRangeLanes(rgb[0] * k * s + half);
+    const VecI g = truncateInRangeLanes(rgb[1] * k * s + half);
+    const VecI b = truncateInRangeLanes(rgb[2] * k * s + half);
     const VecI opaque = hn::Set(di, static_cast<std::int32_t>(0xFF000000u));
     return r | hn::ShiftLeft<8>(g) | hn::ShiftLeft<16>(b) | opaque;
 }
