@@ -197,8 +197,7 @@ inline constexpr int kNoCentreSide = 4;
 /// centre: they end here instead of costing plane setup, a record and a tile's visit (the front
 /// end's last exit).
 inline bool coversNoCentre(const SnappedTriangle& t) {
-    if (t.box.x1 - t.box.x0 >= kNoCentreSide || t.box.y1 - t.box.y0 >= kNoCentreSide)
-        return false;
+    if (t.box.x1 - t.box.x0 >= kNoCentreSide || t.box.y1 - t.box.y0 >= kNoCentreSide) return false;
     CoverageSetup s;
     edgesOf(t, s);
     bool none = true;

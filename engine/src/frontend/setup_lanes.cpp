@@ -184,8 +184,8 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
                     VecI e[3] = {row[0], row[1], row[2]};
                     for (int i = 0; i < kNoCentreSide; ++i) {
                         const VecI right = hn::Sub(w, hn::Set(d, i));
-                        none = hn::And(none, hn::Or(hn::Or(hn::Or(e[0], e[1]), hn::Or(e[2], right)),
-                                                    below));
+                        none = hn::And(
+                            none, hn::Or(hn::Or(hn::Or(e[0], e[1]), hn::Or(e[2], right)), below));
                         for (int k = 0; k < 3; ++k) e[k] = hn::Add(e[k], stepX[k]);
                     }
                     for (int k = 0; k < 3; ++k) row[k] = hn::Add(row[k], stepY[k]);
