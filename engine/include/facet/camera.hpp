@@ -49,6 +49,9 @@ std::string checkCamera(const Camera& camera);
 /// both use it.
 double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh);
 
+/// resolveNearPlane() with the mesh's bounds already known (computeBounds() of it).
+double resolveNearPlane(const RenderSettings& settings, const Bounds& meshBounds);
+
 /// Why a frame from `camera` cannot be rendered with `settings`: the camera is invalid
 /// (checkCamera: non-finite, eye == look, y hint parallel, focal ≤ 0), its size is outside
 /// 1…kMaxImageSide, or its buffers (with supersampling and MSAA) exceed kMaxFrameBytes

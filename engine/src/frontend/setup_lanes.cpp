@@ -155,36 +155,43 @@ HWY_INLINE void setupVector(const LaneInput& in, std::size_t chunk, std::size_t 
         // bits (exact for boxes under kLaneExtent).
         const VecI one = hn::Set(d, 1);
         const VecI half = hn::Set(d, static_cast<std::int32_t>(kSubPixel / 2));
-        VecI edges[3];
-        VecI c00 = zero, c10 = zero, c01 = zero, c11 = zero;  // OR of the edges at each centre
+        VecI edges[3], stepX[3], stepY[3];
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3;
             const VecI dx = hn::Sub(xs[j], xs[i]), dy = hn::Sub(ys[j], ys[i]);
             const MaskI topLeft =
                 hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
-            const VecI e = hn::Sub(
+            edges[i] = hn::Sub(
                 hn::Sub(hn::Mul(dx, hn::Sub(half, ys[i])), hn::Mul(dy, hn::Sub(half, xs[i]))),
                 hn::IfThenZeroElse(topLeft, one));
-            edges[i] = e;
-            const VecI stepX = hn::Neg(hn::ShiftLeft<kSubPixelBits>(dy));
-            const VecI stepY = hn::ShiftLeft<kSubPixelBits>(dx);
-            c00 = hn::Or(c00, e);
-            c10 = hn::Or(c10, hn::Add(e, stepX));
-            c01 = hn::Or(c01, hn::Add(e, stepY));
-            c11 = hn::Or(c11, hn::Add(hn::Add(e, stepX), stepY));
+            stepX[i] = hn::Neg(hn::ShiftLeft<kSubPixelBits>(dy));
+            stepY[i] = hn::ShiftLeft<kSubPixelBits>(dx);
         }
         if (in.sampleReach == 0) {
-            // coversNoCentre(): boxes of at most 2×2 pixels whose centres the edge functions
-            // all leave out end here.
-            const MaskI wide = hn::Eq(hn::Sub(bx1, bx0), one);
-            const MaskI tall = hn::Eq(hn::Sub(by1, by0), one);
-            const MaskI small = hn::And(hn::Lt(hn::Sub(bx1, bx0), hn::Set(d, 2)),
-                                        hn::Lt(hn::Sub(by1, by0), hn::Set(d, 2)));
-            const MaskI covered = hn::Or(
-                hn::Or(hn::Not(hn::Lt(c00, zero)), hn::And(wide, hn::Not(hn::Lt(c10, zero)))),
-                hn::Or(hn::And(tall, hn::Not(hn::Lt(c01, zero))),
-                       hn::And(hn::And(wide, tall), hn::Not(hn::Lt(c11, zero)))));
-            emit = hn::And(emit, hn::Or(hn::Not(small), covered));
+            // coversNoCentre(): boxes of at most kNoCentreSide² pixels whose centres the edge
+            // functions all leave out end here. Centre (i, j) of the box is covered where the
+            // OR of its three edge values and of w − i and h − j (the box's right and bottom
+            // limits as two more edges) has the sign bit clear; the AND of those ORs over the
+            // centres has it clear where any centre is covered.
+            const VecI w = hn::Sub(bx1, bx0), h = hn::Sub(by1, by0);  // pixels − 1
+            const VecI side = hn::Set(d, kNoCentreSide);
+            const MaskI small = hn::And(hn::Lt(w, side), hn::Lt(h, side));
+            if (!hn::AllFalse(d, hn::And(emit, small))) {
+                VecI none = hn::Set(d, -1);
+                VecI row[3] = {edges[0], edges[1], edges[2]};
+                for (int j = 0; j < kNoCentreSide; ++j) {
+                    const VecI below = hn::Sub(h, hn::Set(d, j));
+                    VecI e[3] = {row[0], row[1], row[2]};
+                    for (int i = 0; i < kNoCentreSide; ++i) {
+                        const VecI right = hn::Sub(w, hn::Set(d, i));
+                        none = hn::And(
+                            none, hn::Or(hn::Or(hn::Or(e[0], e[1]), hn::Or(e[2], right)), below));
+                        for (int k = 0; k < 3; ++k) e[k] = hn::Add(e[k], stepX[k]);
+                    }
+                    for (int k = 0; k < 3; ++k) row[k] = hn::Add(row[k], stepY[k]);
+                }
+                emit = hn::AndNot(hn::And(small, hn::Lt(none, zero)), emit);
+            }
         }
 
         if (!hn::AllFalse(d, emit)) {

@@ -31,9 +31,10 @@ inline glm::vec4 clipPoint(const glm::dmat4& clipFromWorld, const glm::vec3& p) 
 /// The per-vertex work of the fast path.
 class VertexStage {
   public:
-    /// Clip coordinates of every position of `mesh`.
+    /// Clip coordinates of every position of `mesh`; with `bounds`, computeBounds() of the
+    /// mesh too, from the same pass over the positions (the same bounds, on every thread count).
     std::span<const glm::vec4> transform(const Mesh& mesh, const glm::dmat4& clipFromWorld,
-                                         int threads);
+                                         int threads, Bounds* bounds = nullptr);
 
     /// Unit (or zero) vertex normals of `mesh`; recomputed only when its positions or indices
     /// change.
@@ -46,6 +47,7 @@ class VertexStage {
 
   private:
     std::vector<glm::vec4> clip_;
+    std::vector<Bounds> boundsParts_;  // transform()'s bounds, one part per thread
     std::vector<glm::vec3> litColors_;
     std::vector<glm::vec3> normals_;
     std::uint64_t normalsFingerprint_ = 0;  // of the mesh normals_ belong to

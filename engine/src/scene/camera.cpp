@@ -85,7 +85,12 @@ Camera resizedCamera(const Camera& camera, int width, int height, KeepFov keep) 
 
 double resolveNearPlane(const RenderSettings& settings, const Mesh& mesh) {
     if (settings.nearPlane > 0.0) return settings.nearPlane;
-    const double diagonal = computeBounds(mesh).diagonal();
+    return resolveNearPlane(settings, computeBounds(mesh));
+}
+
+double resolveNearPlane(const RenderSettings& settings, const Bounds& meshBounds) {
+    if (settings.nearPlane > 0.0) return settings.nearPlane;
+    const double diagonal = meshBounds.diagonal();
     return diagonal > 0.0 ? 1e-3 * diagonal : 1e-3;
 }
 
