@@ -41,6 +41,8 @@ HWY_AFTER_NAMESPACE();
 
 #include <gtest/gtest.h>
 
+#include "every_target.hpp"
+
 #include "shading/fast_lighting.hpp"
 #include "shading/unit_pow.hpp"
 
@@ -56,17 +58,7 @@ void pad(std::vector<float>& x) {
     while (x.size() % 16 != 0) x.push_back(1.0f);
 }
 
-/// Each target this CPU has, forced in turn, runs `body`.
-template <class Body>
-void onEveryTarget(Body body) {
-    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
-    ASSERT_FALSE(targets.empty());
-    for (const std::int64_t target : targets) {
-        hwy::SetSupportedTargetsForTest(target);
-        body(hwy::TargetName(target));
-    }
-    hwy::SetSupportedTargetsForTest(0);
-}
+using test::onEveryTarget;
 
 std::uint32_t bitsOf(float v) {
     return std::bit_cast<std::uint32_t>(v);

@@ -39,6 +39,8 @@ HWY_AFTER_NAMESPACE();
 
 #include <gtest/gtest.h>
 
+#include "every_target.hpp"
+
 #include "shading/fragment.hpp"
 #include "shading/samplers.hpp"
 
@@ -48,17 +50,7 @@ HWY_EXPORT(bilinearAll);
 
 namespace {
 
-/// Each target this CPU has, forced in turn, runs `body`.
-template <class Body>
-void onEveryTarget(Body body) {
-    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
-    ASSERT_FALSE(targets.empty());
-    for (const std::int64_t target : targets) {
-        hwy::SetSupportedTargetsForTest(target);
-        body(hwy::TargetName(target));
-    }
-    hwy::SetSupportedTargetsForTest(0);
-}
+using test::onEveryTarget;
 
 /// A w × h texture of random texels, alpha included (it must not leak into the colour).
 Texture randomTexture(int w, int h, std::mt19937& rng) {
