@@ -47,7 +47,7 @@ TEST(NearPlane, TransformBoundsAreComputeBoundsAtAnyThreadCount) {
         for (const int threads : {1, 2, 3, 4}) {
             detail::VertexStage stage;
             Bounds got;
-            const auto clip = stage.transform(mesh, clipFromWorld, threads, &got);
+            const auto clip = stage.transform(mesh, clipFromWorld, threads, got);
             EXPECT_TRUE(sameBits(got, expected))
                 << "threads " << threads << " nanFirst " << nanFirst;
             ASSERT_EQ(clip.size(), mesh.positions.size());
@@ -56,12 +56,12 @@ TEST(NearPlane, TransformBoundsAreComputeBoundsAtAnyThreadCount) {
         RenderSettings settings;
         detail::VertexStage stage;
         Bounds got;
-        (void)stage.transform(mesh, clipFromWorld, 2, &got);
+        (void)stage.transform(mesh, clipFromWorld, 2, got);
         EXPECT_EQ(resolveNearPlane(settings, got), resolveNearPlane(settings, mesh));
     }
     detail::VertexStage stage;
     Bounds got;
-    (void)stage.transform(Mesh{}, glm::dmat4(1.0), 2, &got);
+    (void)stage.transform(Mesh{}, glm::dmat4(1.0), 2, got);
     EXPECT_TRUE(sameBits(got, computeBounds(Mesh{})));
 }
 

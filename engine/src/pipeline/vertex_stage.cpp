@@ -25,20 +25,14 @@ constexpr std::ptrdiff_t kParallelVertices = 16384;
 }  // namespace
 
 std::span<const glm::vec4> VertexStage::transform(const Mesh& mesh, const glm::dmat4& clipFromWorld,
-                                                  int threads, Bounds* bounds) {
+                                                  int threads, Bounds& bounds) {
     const auto& positions = mesh.positions;
     clip_.resize(positions.size());
-    const auto vertexCount = static_cast<std::ptrdiff_t>(positions.size());
-    if (bounds == nullptr) {
-#pragma omp parallel for num_threads(threads) if (vertexCount > kParallelVertices)
-        for (std::ptrdiff_t i = 0; i < vertexCount; ++i)
-            clip_[i] = clipPoint(clipFromWorld, positions[i]);
-        return clip_;
-    }
-    // The bounds in the same pass: computeBounds() on the calling thread cost as much as a
-    // thread's share of the transform (the 1M sphere: 21 M instructions a frame), serial.
-    *bounds = Bounds{};
+    bounds = Bounds{};
     if (positions.empty()) return clip_;
+    // The bounds in the same pass: computeBounds() on the calling thread cost as much as a
+    // thread's share of the transform (the 2M-triangle sphere: 21 M instructions a frame), serial.
+    const auto vertexCount = static_cast<std::ptrdiff_t>(positions.size());
     const int parts = vertexCount > kParallelVertices ? std::max(1, threads) : 1;
     constexpr float kInf = std::numeric_limits<float>::infinity();
     boundsParts_.assign(static_cast<std::size_t>(parts), Bounds{glm::vec3(kInf), glm::vec3(-kInf)});
@@ -66,8 +60,8 @@ std::span<const glm::vec4> VertexStage::transform(const Mesh& mesh, const glm::d
         b.min = glm::min(b.min, boundsParts_[part].min);
         b.max = glm::max(b.max, boundsParts_[part].max);
     }
-    bounds->min = glm::min(positions.front(), b.min);
-    bounds->max = glm::max(positions.front(), b.max);
+    bounds.min = glm::min(positions.front(), b.min);
+    bounds.max = glm::max(positions.front(), b.max);
     return clip_;
 }
 
@@ -103,9 +97,7 @@ DrawInput prepareDrawInput(VertexStage& stage, const Scene& scene, const Camera&
     // The mesh's bounds (for the near plane when the settings leave it open) come from the
     // transform's pass over the positions.
     Bounds bounds;
-    const bool needBounds = !(settings.nearPlane > 0.0);
-    DrawInput input{.clip = stage.transform(mesh, clipFromWorld(camera), threads,
-                                            needBounds ? &bounds : nullptr),
+    DrawInput input{.clip = stage.transform(mesh, clipFromWorld(camera), threads, bounds),
                     .colors = mesh.colors,
                     .indices = mesh.indices,
                     .nearPlane = static_cast<float>(resolveNearPlane(settings, bounds)),

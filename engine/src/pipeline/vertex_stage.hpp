@@ -31,10 +31,10 @@ inline glm::vec4 clipPoint(const glm::dmat4& clipFromWorld, const glm::vec3& p) 
 /// The per-vertex work of the fast path.
 class VertexStage {
   public:
-    /// Clip coordinates of every position of `mesh`; with `bounds`, computeBounds() of the
-    /// mesh too, from the same pass over the positions (the same bounds, on every thread count).
+    /// Clip coordinates of every position of `mesh`, and into `bounds` computeBounds() of the
+    /// mesh, from the same pass over the positions (the same bounds, on every thread count).
     std::span<const glm::vec4> transform(const Mesh& mesh, const glm::dmat4& clipFromWorld,
-                                         int threads, Bounds* bounds = nullptr);
+                                         int threads, Bounds& bounds);
 
     /// Unit (or zero) vertex normals of `mesh`; recomputed only when its positions or indices
     /// change.

@@ -60,19 +60,28 @@ HWY_INLINE VecI truncateInRangeLanes(VecF v) {
 #endif
 }
 
+/// toByte() lane by lane for c already in [0, 1] (no clamp needed): scale, round half up.
+HWY_INLINE VecI unitToByteLanes(VecF c) {
+    const Df d;
+    return truncateInRangeLanes(c * hn::Set(d, 255.0f) + hn::Set(d, 0.5f));  // in [0.5, 255.5]
+}
+
 /// toByte() lane by lane: clamp to [0, 1] (NaN to 0), scale, round half up.
 HWY_INLINE VecI toByteLanes(VecF c) {
     const Df d;
     const VecF zero = hn::Zero(d), one = hn::Set(d, 1.0f);
-    const VecF v = hn::IfThenElse(c > zero, hn::IfThenElse(c < one, c, one), zero);
-    return truncateInRangeLanes(v * hn::Set(d, 255.0f) + hn::Set(d, 0.5f));  // in [0.5, 255.5]
+    return unitToByteLanes(hn::IfThenElse(c > zero, hn::IfThenElse(c < one, c, one), zero));
+}
+
+/// Opaque RGBA8 from the lanes' three channel bytes, R in the low byte.
+HWY_INLINE VecI packBytesLanes(VecI r, VecI g, VecI b) {
+    const VecI opaque = hn::Set(Di(), static_cast<std::int32_t>(0xFF000000u));
+    return r | hn::ShiftLeft<8>(g) | hn::ShiftLeft<16>(b) | opaque;
 }
 
 /// packColor() lane by lane: opaque RGBA8, R in the low byte.
 HWY_INLINE VecI packColorLanes(VecF r, VecF g, VecF b) {
-    const VecI opaque = hn::Set(Di(), static_cast<std::int32_t>(0xFF000000u));
-    return toByteLanes(r) | hn::ShiftLeft<8>(toByteLanes(g)) | hn::ShiftLeft<16>(toByteLanes(b)) |
-           opaque;
+    return packBytesLanes(toByteLanes(r), toByteLanes(g), toByteLanes(b));
 }
 
 /// glm::clamp(c, 0, 1) lane by lane (NaN stays NaN, as there).

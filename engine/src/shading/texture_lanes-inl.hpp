@@ -146,12 +146,9 @@ HWY_INLINE VecI bilinearPackedLanes(const MipLevel& level, VecF u, VecF v) {
     // packColor(c / 255) without toByte()'s clamp: the lerps stay within their texels (a + (b −
     // a)·f with f ∈ [0, 1) lies between a and b), so c ∈ [0, 255] and c · fl(1/255) ∈ [0, 1]
     // (rounding is monotone and 255 · fl(1/255) rounds to exactly 1): the clamp changes nothing.
-    const VecF k = hn::Set(d, 1.0f / 255.0f), s = hn::Set(d, 255.0f), half = hn::Set(d, 0.5f);
-    const VecI r = truncateInRangeLanes(rgb[0] * k * s + half);
-    const VecI g = truncateInRangeLanes(rgb[1] * k * s + half);
-    const VecI b = truncateInRangeLanes(rgb[2] * k * s + half);
-    const VecI opaque = hn::Set(di, static_cast<std::int32_t>(0xFF000000u));
-    return r | hn::ShiftLeft<8>(g) | hn::ShiftLeft<16>(b) | opaque;
+    const VecF k = hn::Set(d, 1.0f / 255.0f);
+    return packBytesLanes(unitToByteLanes(rgb[0] * k), unitToByteLanes(rgb[1] * k),
+                          unitToByteLanes(rgb[2] * k));
 }
 
 }  // namespace facet::detail::HWY_NAMESPACE

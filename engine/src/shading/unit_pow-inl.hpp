@@ -32,7 +32,9 @@ HWY_INLINE VecF unitPowLanes(VecF x, float s) {
     // when subnormal; that is rare, and one test for the whole vector keeps the scaling's
     // multiply and blends off the chain of dependent operations the power is. The lanes' values
     // are the same either way.
-    const MaskF tiny = hn::And(x<all(kMinNormal), x> hn::Zero(d));
+    const MaskF belowNormal = x < all(kMinNormal);
+    const MaskF positive = x > hn::Zero(d);
+    const MaskF tiny = hn::And(belowNormal, positive);
     VecF xs = x;
     VecF bias = all(127.0f);
     if (HWY_UNLIKELY(!hn::AllFalse(d, tiny))) {
